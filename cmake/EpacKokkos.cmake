@@ -1,0 +1,26 @@
+# Kokkos: an installed one that has the OpenMP backend (or a GPU backend) if find_package finds
+# one; otherwise Kokkos 3.4.01 (OpenMP + Serial) bootstrapped from Debian's trilinos source
+# package by cmake/bootstrap-kokkos.sh into a cache prefix (design.md section 10).
+find_package(Kokkos QUIET)
+set(_epac_kokkos_ok FALSE)
+if(Kokkos_FOUND)
+  foreach(_dev OPENMP CUDA HIP SYCL)
+    kokkos_check(DEVICES ${_dev} RETURN_VALUE _has)
+    if(_has)
+      set(_epac_kokkos_ok TRUE)
+    endif()
+  endforeach()
+  if(NOT _epac_kokkos_ok)
+    message(STATUS "epac: Kokkos at ${Kokkos_DIR} has no OpenMP/GPU backend; bootstrapping one")
+  endif()
+endif()
+if(NOT _epac_kokkos_ok)
+  execute_process(COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/bootstrap-kokkos.sh
+    OUTPUT_VARIABLE _prefix OUTPUT_STRIP_TRAILING_WHITESPACE RESULT_VARIABLE _rc)
+  if(NOT _rc EQUAL 0)
+    message(FATAL_ERROR "epac: Kokkos bootstrap failed (cmake/bootstrap-kokkos.sh)")
+  endif()
+  unset(Kokkos_DIR CACHE)
+  find_package(Kokkos REQUIRED PATHS ${_prefix} NO_DEFAULT_PATH)
+endif()
+message(STATUS "epac: Kokkos ${Kokkos_VERSION} from ${Kokkos_DIR}, devices: ${Kokkos_DEVICES}")

@@ -1,0 +1,27 @@
+#pragma once
+// The physical effects a contact kernel computes, as a compile-time set (design.md section 5).
+// A disabled effect compiles to nothing and its history fields are not allocated.
+namespace epac {
+
+enum EffectBits : unsigned {
+  kAdhesion = 1u << 0,
+  kPlasticity = 1u << 1,
+  kFriction = 1u << 2,
+  kDamping = 1u << 3,
+  kRadiusGrowth = 1u << 4,
+  kAllEffects = (1u << 5) - 1u,
+};
+
+template <unsigned Bits>
+struct Effects {
+  static constexpr unsigned bits = Bits;
+  static constexpr bool adhesion = (Bits & kAdhesion) != 0;
+  static constexpr bool plasticity = (Bits & kPlasticity) != 0;
+  static constexpr bool friction = (Bits & kFriction) != 0;
+  static constexpr bool damping = (Bits & kDamping) != 0;
+  static constexpr bool radius_growth = (Bits & kRadiusGrowth) != 0;
+};
+
+using AllEffects = Effects<kAllEffects>;
+
+}  // namespace epac

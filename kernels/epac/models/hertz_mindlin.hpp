@@ -1,0 +1,70 @@
+#pragma once
+// Hertz normal force with Mindlin-type tangential spring (baseline).
+//   f   = (4/3) E* sqrt(R*) delta^(3/2)             (Hertz; MDR (25) is the same law)
+//   k_n = df/d(delta) = 2 E* sqrt(R* delta)          (tangent stiffness: damping and k_t)
+//   k_t = (4 G*/E*) k_n                               Nan (22)
+// Damping F_d = c sqrt(m* k_n) d(delta)/dt with c from e0 by the exact Hertz relation of
+// params/restitution_damping.hpp (velocity-independent restitution).
+#include <epac/models/contact_geometry.hpp>
+#include <epac/models/effects.hpp>
+#include <epac/params/material.hpp>
+#include <epac/params/restitution_damping.hpp>
+#include <epac/state/contact_history.hpp>
+
+#include <vector>
+
+namespace epac {
+
+template <class T>
+struct HertzMindlinPair {
+  T E_star, kt_over_kn, c_damp, mu;
+};
+
+template <class T, class Eff = Effects<kFriction | kDamping>, class Device = DefaultDevice>
+struct HertzMindlin {
+  using scalar_type = T;
+  using effects = Eff;
+  using device_type = Device;
+  static constexpr const char* name = "hertz_mindlin";
+  static constexpr int normal_history_size = 0;
+  static constexpr int history_size = normal_history_size + (Eff::friction ? 3 : 0);
+
+  Kokkos::View<HertzMindlinPair<T>*, Device> pairs;
+  int nmat = 0;
+
+  KOKKOS_INLINE_FUNCTION NormalForce<T> normal(const ContactGeometry<T>& g,
+                                               const HistoryRow<T, Device>&) const {
+    NormalForce<T> r;
+    if (g.delta <= T(0)) return r;
+    const HertzMindlinPair<T> p = pairs(g.pair);
+    const T a = math::sqrt(g.R_eff * g.delta);  // Hertz contact radius
+    r.active = true;
+    r.f = T(4) / T(3) * p.E_star * a * g.delta;
+    r.k_n = T(2) * p.E_star * a;
+    if (Eff::damping) { r.damping = p.c_damp; r.damping_t = p.c_damp; }
+    if (Eff::friction) { r.k_t = p.kt_over_kn * r.k_n; r.mu = p.mu; }
+    return r;
+  }
+
+  // Host: builds the pair table from validated materials (nmat x nmat, row-major).
+  static HertzMindlin create(const std::vector<Material>& materials) {  // host
+    HertzMindlin m;
+    m.nmat = static_cast<int>(materials.size());
+    for (const auto& mat : materials) mat.validate();
+    m.pairs = Kokkos::View<HertzMindlinPair<T>*, Device>("hertz_mindlin.pairs", m.nmat * m.nmat);
+    auto h = Kokkos::create_mirror_view(m.pairs);
+    for (int a = 0; a < m.nmat; ++a)
+      for (int b = 0; b < m.nmat; ++b) {
+        const Material& A = materials[a];
+        const Material& B = materials[b];
+        if (A.rigid && B.rigid) { h(a * m.nmat + b) = {T(0), T(0), T(0), T(0)}; continue; }
+        const PairProperties pp = pair_properties(A, B);
+        h(a * m.nmat + b) = {T(pp.E_star), T(4.0 * pp.G_star / pp.E_star),
+                             T(hertz_damping_coefficient(pp.restitution)), T(pp.friction)};
+      }
+    Kokkos::deep_copy(m.pairs, h);
+    return m;
+  }
+};
+
+}  // namespace epac

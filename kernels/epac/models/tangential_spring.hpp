@@ -1,0 +1,53 @@
+#pragma once
+// Mindlin-type tangential spring with Coulomb limit, Nan (21)-(23), with viscous damping
+// Nan (25). The history is the tangential displacement delta_t (3 fields), rotated into the
+// current tangent plane every step with its length kept (the contact plane turns as the
+// particles roll and orbit).
+#include <epac/core/vec3.hpp>
+#include <epac/models/contact_geometry.hpp>
+#include <epac/state/contact_history.hpp>
+
+namespace epac {
+
+// Returns the tangential force on particle i. v_t is the tangential relative velocity of i's
+// contact point with respect to j's (or the wall's). `normal_force` is the law's normal force f
+// (Nan (23) uses f, without damping); the Coulomb bound is mu |f|, so adhesive tension counts.
+template <class T, class Row>
+KOKKOS_INLINE_FUNCTION Vec3<T> tangential_spring_force(const NormalForce<T>& nf, const Vec3<T>& n,
+                                                       const Vec3<T>& v_t, T m_eff, T dt,
+                                                       const Row& h) {
+  Vec3<T> xi(h(0), h(1), h(2));
+  // Rotate into the current tangent plane, keeping |xi|.
+  const T len_old = norm(xi);
+  xi -= dot(xi, n) * n;
+  const T len_new = norm(xi);
+  if (len_new > T(0)) xi *= len_old / len_new;
+  xi += dt * v_t;
+  const T damp = nf.damping_t * math::sqrt_nonneg(m_eff * nf.k_t);
+  Vec3<T> ft = T(-1) * nf.k_t * xi - damp * v_t;  // Nan (21) + (25): opposes the displacement
+  const T f_lim = nf.mu * math::fabs(nf.f);
+  const T ft_mag = norm(ft);
+  if (ft_mag > f_lim) {
+    // Sliding, Nan (23): |F_t| = mu |f| along -delta_t, no viscous part; the spring is
+    // shortened to the length that carries exactly that force.
+    const T xi_mag = norm(xi);
+    if (xi_mag > T(0) && nf.k_t > T(0)) {
+      const Vec3<T> dir = (T(1) / xi_mag) * xi;
+      ft = T(-1) * f_lim * dir;
+      xi = (f_lim / nf.k_t) * dir;
+    } else {
+      // No spring direction (k_t == 0 or xi == 0): the damping alone exceeded the limit.
+      ft = ft_mag > T(0) ? (f_lim / ft_mag) * ft : Vec3<T>();
+      xi = Vec3<T>();
+    }
+  }
+  h(0) = xi.x; h(1) = xi.y; h(2) = xi.z;
+  return ft;
+}
+
+template <class Row>
+KOKKOS_INLINE_FUNCTION void reset_tangential(const Row& h) {
+  h(0) = 0; h(1) = 0; h(2) = 0;
+}
+
+}  // namespace epac

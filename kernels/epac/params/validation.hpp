@@ -1,0 +1,44 @@
+#pragma once
+// Host-side parameter checks. Every check throws before any kernel runs, with a message that
+// names the parameter, its value and the valid range.
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+namespace epac {
+
+class ParameterError : public std::invalid_argument {
+ public:
+  using std::invalid_argument::invalid_argument;
+};
+
+enum class Bound { open, closed };
+
+// Requires lo (<|<=) value (<|<=) hi and finite unless allow_inf. Throws ParameterError.
+inline void require_range(const std::string& name, double value, double lo, Bound lo_kind, double hi,
+                          Bound hi_kind, bool allow_inf = false) {
+  const bool is_nan = std::isnan(value);
+  const bool inf_ok = allow_inf && std::isinf(value) && value > 0;
+  bool ok = !is_nan && (std::isfinite(value) || inf_ok);
+  if (ok && !inf_ok) {
+    ok = (lo_kind == Bound::open ? value > lo : value >= lo) &&
+         (hi_kind == Bound::open ? value < hi : value <= hi);
+  }
+  if (!ok) {
+    std::ostringstream s;
+    s << name << " = " << value << " is outside the valid range " << (lo_kind == Bound::open ? "(" : "[")
+      << lo << ", ";
+    if (std::isinf(hi)) s << "inf" << (allow_inf ? "]" : ")");
+    else s << hi << (hi_kind == Bound::open ? ")" : "]");
+    throw ParameterError(s.str());
+  }
+}
+
+inline void require_positive(const std::string& name, double value, bool allow_inf = false) {
+  require_range(name, value, 0.0, Bound::open, std::numeric_limits<double>::infinity(), Bound::open,
+                allow_inf);
+}
+
+}  // namespace epac

@@ -1,0 +1,34 @@
+#pragma once
+// Analytic plane walls (design.md section 3): a point on the plane, a unit normal pointing into
+// the domain (towards the particles it touches), a velocity and a material id.
+#include <epac/core/kokkos_compat.hpp>
+
+#include <string>
+
+namespace epac {
+
+template <class T, class Device = DefaultDevice>
+struct Walls {
+  using vec_view = Kokkos::View<T* [3], Kokkos::LayoutLeft, Device>;
+  int n = 0;
+  vec_view point, normal, velocity;
+  Kokkos::View<int*, Device> material;
+
+  Walls() = default;
+  explicit Walls(int count, const std::string& label = "walls")
+      : n(count), point(label + ".point", count), normal(label + ".normal", count),
+        velocity(label + ".velocity", count), material(label + ".material", count) {}
+};
+
+// Moves every wall by its velocity over dt (prescribed-displacement driving).
+template <class T, class Device>
+void advance_walls(const Walls<T, Device>& w, T dt) {
+  using exec = typename Device::execution_space;
+  auto p = w.point;
+  auto v = w.velocity;
+  Kokkos::parallel_for("epac::advance_walls", Kokkos::RangePolicy<exec>(0, w.n), KOKKOS_LAMBDA(int k) {
+    for (int d = 0; d < 3; ++d) p(k, d) += dt * v(k, d);
+  });
+}
+
+}  // namespace epac
