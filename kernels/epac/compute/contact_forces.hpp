@@ -41,7 +41,8 @@ KOKKOS_INLINE_FUNCTION void finish_contact(const Model& model, const Particles<T
   T fn = nf.f;
   if (Eff::damping) {
     const T fd = nf.damping * math::sqrt_nonneg(g.m_eff * nf.k_n) * g.delta_dot;
-    fn += (nf.damp_compressive_only && fn + fd <= T(0)) ? T(0) : fd;
+    if (!nf.damp_compressive_only) fn += fd;
+    else if (fn > T(0)) fn = math::max(fn + fd, T(0));  // damping never turns a push into a pull
   }
   Vec3<T> F = fn * g.n;
   if (Eff::friction) {

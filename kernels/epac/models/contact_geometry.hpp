@@ -29,7 +29,7 @@ struct NormalForce {
   T f = 0;          // normal force of the law on particle i along n; positive = repulsive
   T k_n = 0;        // normal stiffness used for damping and for k_t (the law's current branch)
   T damping = 0;    // viscous coefficient: F_d = damping * sqrt(m_eff * k_n) * delta_dot
-  bool damp_compressive_only = false;  // apply damping only while f + F_d > 0
+  bool damp_compressive_only = false;  // damp only while f > 0, and never let f + F_d pull
   T k_t = 0;        // tangential stiffness
   T damping_t = 0;  // tangential viscous coefficient: F_td = -damping_t sqrt(m_eff k_t) v_t
   T mu = 0;         // Coulomb friction coefficient

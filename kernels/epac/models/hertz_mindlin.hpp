@@ -4,7 +4,8 @@
 //   k_n = df/d(delta) = 2 E* sqrt(R* delta)          (tangent stiffness: damping and k_t)
 //   k_t = (4 G*/E*) k_n                               Nan (22)
 // Damping F_d = c sqrt(m* k_n) d(delta)/dt with c from e0 by the exact Hertz relation of
-// params/restitution_damping.hpp (velocity-independent restitution).
+// params/restitution_damping.hpp (velocity-independent restitution); the total normal force is
+// clamped at zero (no viscous pull near separation).
 #include <epac/models/contact_geometry.hpp>
 #include <epac/models/effects.hpp>
 #include <epac/params/material.hpp>
@@ -41,7 +42,7 @@ struct HertzMindlin {
     r.active = true;
     r.f = T(4) / T(3) * p.E_star * a * g.delta;
     r.k_n = T(2) * p.E_star * a;
-    if (Eff::damping) { r.damping = p.c_damp; r.damping_t = p.c_damp; }
+    if (Eff::damping) { r.damping = p.c_damp; r.damping_t = p.c_damp; r.damp_compressive_only = true; }
     if (Eff::friction) { r.k_t = p.kt_over_kn * r.k_n; r.mu = p.mu; }
     return r;
   }

@@ -18,16 +18,20 @@ inline double linear_damping_ratio(double e0) {
 }
 
 // Hertz: with k_n = dF/d(delta) = 2 E* sqrt(R* delta) the damped Hertz impact, scaled by
-// delta_0 = (m v0^2 / K)^(2/5), becomes  x'' = -x^(3/2) - c sqrt(3/2) x^(1/4) x',  x(0)=0, x'(0)=1,
-// so the restitution depends on c alone (not on the impact speed). We integrate that equation
-// (RK4) and invert e(c) = e0 by bisection: the exact relation, not a fit.
+// delta_0 = (m v0^2 / K)^(2/5), becomes
+//   x'' = -max(x^(3/2) + c sqrt(3/2) x^(1/4) x', 0),  x(0) = 0, x'(0) = 1,
+// so the restitution depends on c alone (not on the impact speed). The max(.., 0) is the
+// kernel's rule for Hertz: the total normal force never pulls (without it the x^(1/4) damping
+// term outlasts the x^(3/2) spring near separation and the spheres never part). We integrate
+// that equation (RK4) and invert e(c) = e0 by bisection: the exact relation, not a fit.
 inline double hertz_restitution_for(double c) {
   const double a = c * std::sqrt(1.5);
   double x = 0.0, v = 1.0;
   const double h = 2e-3;  // the undamped contact lasts ~3.2 time units
   auto acc = [a](double xx, double vv) {
     const double xp = xx > 0 ? xx : 0.0;
-    return -xp * std::sqrt(xp) - a * std::sqrt(std::sqrt(xp)) * vv;
+    const double f = xp * std::sqrt(xp) + a * std::sqrt(std::sqrt(xp)) * vv;
+    return f > 0 ? -f : 0.0;
   };
   for (int s = 0; s < 200000; ++s) {
     const double k1x = v, k1v = acc(x, v);
