@@ -1,0 +1,56 @@
+// Contact-kernel throughput (contacts per second) on random dense packings with about 6 contacts
+// per particle (support/dense_packing.hpp), 1e4 to 1e6 contacts, double and float.
+// One iteration = one force pass: zero forces, then compute_pair_forces.
+#include <benchmark/benchmark.h>
+#include <epac/compute/contact_forces.hpp>
+#include <epac/models/hertz_mindlin.hpp>
+#include <support/dense_packing.hpp>
+
+using namespace epac;
+
+namespace {
+Material glass() {
+  Material m;
+  m.name = "glass"; m.youngs_modulus = 70e9; m.poisson_ratio = 0.25; m.density = 2500;
+  m.restitution = 0.5; m.friction = 0.5;
+  return m;
+}
+
+template <class Model>
+void run_contact_kernel(benchmark::State& state, const Model& model) {
+  using T = typename Model::scalar_type;
+  using D = typename Model::device_type;
+  auto pk = bench::make_dense_packing<T, D>(static_cast<int>(state.range(0)));
+  ContactHistory<T, D> h(pk.contacts.count, Model::history_size);
+  for (auto _ : state) {
+    zero_forces(pk.particles);
+    compute_pair_forces(model, pk.particles, pk.contacts, h, T(1e-7));
+    Kokkos::fence();
+  }
+  state.SetItemsProcessed(state.iterations() * pk.contacts.count);
+  state.counters["contacts"] = pk.contacts.count;
+  state.counters["contacts_per_s"] =
+      benchmark::Counter(double(pk.contacts.count), benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["history_bytes_per_contact"] = Model::history_size * sizeof(T);
+}
+
+template <class T>
+void BM_HertzMindlin(benchmark::State& state) {
+  run_contact_kernel(state, HertzMindlin<T, Effects<kFriction | kDamping>>::create({glass()}));
+}
+template <class T>
+void BM_HertzOnly(benchmark::State& state) {  // no friction, no damping: what the effects cost
+  run_contact_kernel(state, HertzMindlin<T, Effects<0>>::create({glass()}));
+}
+
+// n_side^3 particles, 3 n^2 (n-1) contacts: 16 -> 1.2e4, 33 -> 1.0e5, 47 -> 3.0e5, 70 -> 1.0e6
+void packing_sizes(benchmark::internal::Benchmark* b) {
+  for (int n : {16, 33, 47, 70}) b->Arg(n);
+  b->Unit(benchmark::kMillisecond)->UseRealTime();
+}
+}  // namespace
+
+BENCHMARK_TEMPLATE(BM_HertzMindlin, double)->Apply(packing_sizes);
+BENCHMARK_TEMPLATE(BM_HertzMindlin, float)->Apply(packing_sizes);
+BENCHMARK_TEMPLATE(BM_HertzOnly, double)->Apply(packing_sizes);
+BENCHMARK_TEMPLATE(BM_HertzOnly, float)->Apply(packing_sizes);

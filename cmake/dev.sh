@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# The README's two commands. Each installs what it needs (Debian packages, Kokkos bootstrap via
+# CMake), configures and builds, then:
+#   bash cmake/dev.sh run [SCENE.toml] [epac-run options]   runs the driver (default scene)
+#   bash cmake/dev.sh test [ctest options]                  builds and runs every test
+#   bash cmake/dev.sh bench [benchmark options]             runs the contact-kernel benchmarks
+# Environment: EPAC_BUILD_DIR (default build), EPAC_THREADS (default: all cores; sets
+# OMP_NUM_THREADS), EPAC_CMAKE_ARGS (extra configure arguments, e.g. -DKokkos_ROOT=...).
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+cmd="${1:-}"; shift || true
+build="${EPAC_BUILD_DIR:-$root/build}"
+threads="${EPAC_THREADS:-${OMP_NUM_THREADS:-$(nproc)}}"
+export OMP_NUM_THREADS="$threads" OMP_PROC_BIND="${OMP_PROC_BIND:-false}"
+
+bash "$root/cmake/install-deps.sh"
+# shellcheck disable=SC2086
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release ${EPAC_CMAKE_ARGS:-} > "$build.configure.log" 2>&1 \
+  || { cat "$build.configure.log"; exit 1; }
+jobs=$(nproc)
+
+case "$cmd" in
+  run)
+    cmake --build "$build" -j "$jobs" --target epac-run
+    scene="$root/drivers/scenes/settling.toml"
+    if [ $# -gt 0 ] && [[ "$1" != -* ]]; then scene="$1"; shift; fi
+    exec "$build/drivers/epac-run" "$scene" --threads "$threads" "$@"
+    ;;
+  test)
+    cmake --build "$build" -j "$jobs"
+    cd "$build"
+    exec ctest --output-on-failure -j "$jobs" "$@"
+    ;;
+  bench)
+    cmake --build "$build" -j "$jobs" --target epac-bench-contacts
+    exec "$build/bench/epac-bench-contacts" "$@"
+    ;;
+  *)
+    echo "usage: bash cmake/dev.sh run [SCENE.toml] [options] | test [ctest options] | bench [options]" >&2
+    exit 2
+    ;;
+esac
