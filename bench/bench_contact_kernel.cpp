@@ -3,6 +3,8 @@
 // One iteration = one force pass: zero forces, then compute_pair_forces.
 #include <benchmark/benchmark.h>
 #include <epac/compute/contact_forces.hpp>
+#include <epac/compute/deterministic_reduce.hpp>
+#include <epac/compute/history_remap.hpp>
 #include <epac/models/hertz_mindlin.hpp>
 #include <support/dense_packing.hpp>
 
@@ -43,6 +45,29 @@ void BM_HertzOnly(benchmark::State& state) {  // no friction, no damping: what t
   run_contact_kernel(state, HertzMindlin<T, Effects<0>>::create({glass()}));
 }
 
+// Deterministic mode: per-contact buffer + per-particle sum in key order (design.md section 6).
+// The incidence is built once per list rebuild, outside the timed loop, as in a simulation.
+template <class T>
+void BM_HertzMindlinDeterministic(benchmark::State& state) {
+  using Model = HertzMindlin<T, Effects<kFriction | kDamping>>;
+  using D = typename Model::device_type;
+  const Model model = Model::create({glass()});
+  auto pk = bench::make_dense_packing<T, D>(static_cast<int>(state.range(0)));
+  ContactHistory<T, D> h(pk.contacts.count, Model::history_size);
+  ContactForceBuffer<T, D> buf(pk.contacts.count);
+  auto inc = build_incidence(pk.particles.n, pk.contacts, pair_contact_keys(pk.particles, pk.contacts), true);
+  for (auto _ : state) {
+    zero_forces(pk.particles);
+    compute_pair_forces(model, pk.particles, pk.contacts, h, T(1e-7), {}, buf);
+    reduce_contact_forces(pk.particles, buf, inc);
+    Kokkos::fence();
+  }
+  state.SetItemsProcessed(state.iterations() * pk.contacts.count);
+  state.counters["contacts"] = pk.contacts.count;
+  state.counters["contacts_per_s"] =
+      benchmark::Counter(double(pk.contacts.count), benchmark::Counter::kIsIterationInvariantRate);
+}
+
 // n_side^3 particles, 3 n^2 (n-1) contacts: 16 -> 1.2e4, 33 -> 1.0e5, 47 -> 3.0e5, 70 -> 1.0e6
 void packing_sizes(benchmark::internal::Benchmark* b) {
   for (int n : {16, 33, 47, 70}) b->Arg(n);
@@ -52,5 +77,6 @@ void packing_sizes(benchmark::internal::Benchmark* b) {
 
 BENCHMARK_TEMPLATE(BM_HertzMindlin, double)->Apply(packing_sizes);
 BENCHMARK_TEMPLATE(BM_HertzMindlin, float)->Apply(packing_sizes);
+BENCHMARK_TEMPLATE(BM_HertzMindlinDeterministic, double)->Apply(packing_sizes);
 BENCHMARK_TEMPLATE(BM_HertzOnly, double)->Apply(packing_sizes);
 BENCHMARK_TEMPLATE(BM_HertzOnly, float)->Apply(packing_sizes);

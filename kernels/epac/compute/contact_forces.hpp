@@ -20,6 +20,19 @@ struct ContactOutputs {
   Kokkos::View<T*, Device> overlap;       // delta
 };
 
+// Deterministic mode (design.md section 6): when `force` is allocated, the kernel stores each
+// contact's force on i and the torques on i and j here instead of adding them atomically;
+// compute/deterministic_reduce.hpp then sums them per particle in a fixed order.
+template <class T, class Device>
+struct ContactForceBuffer {
+  using vec_view = Kokkos::View<T* [3], Kokkos::LayoutLeft, Device>;
+  vec_view force, torque_i, torque_j;
+  ContactForceBuffer() = default;
+  explicit ContactForceBuffer(int contacts)
+      : force("buffer.force", contacts), torque_i("buffer.torque_i", contacts), torque_j("buffer.torque_j", contacts) {}
+  KOKKOS_INLINE_FUNCTION bool enabled() const { return force.extent(0) > 0; }
+};
+
 namespace detail {
 
 // Shared tail of pair and wall contacts: damping, friction, accumulation.
@@ -28,7 +41,8 @@ KOKKOS_INLINE_FUNCTION void finish_contact(const Model& model, const Particles<T
                                            const ContactGeometry<T>& g, const Vec3<T>& v_c,
                                            const Vec3<T>& r_i, const Vec3<T>& r_j,
                                            const HistoryRow<T, Device>& row,
-                                           const ContactOutputs<T, Device>& out, int k) {
+                                           const ContactOutputs<T, Device>& out,
+                                           const ContactForceBuffer<T, Device>& buf, int k) {
   using Eff = typename Model::effects;
   const NormalForce<T> nf = model.normal(g, row);
   const auto trow = row.shifted(Model::normal_history_size);
@@ -36,6 +50,9 @@ KOKKOS_INLINE_FUNCTION void finish_contact(const Model& model, const Particles<T
     if (Eff::friction) reset_tangential(trow);
     if (out.normal_force.extent(0) > 0) out.normal_force(k) = T(0);
     if (out.overlap.extent(0) > 0) out.overlap(k) = g.delta;
+    if (buf.enabled()) {
+      store3(buf.force, k, Vec3<T>()); store3(buf.torque_i, k, Vec3<T>()); store3(buf.torque_j, k, Vec3<T>());
+    }
     return;
   }
   T fn = nf.f;
@@ -45,15 +62,24 @@ KOKKOS_INLINE_FUNCTION void finish_contact(const Model& model, const Particles<T
     else if (fn > T(0)) fn = math::max(fn + fd, T(0));  // damping never turns a push into a pull
   }
   Vec3<T> F = fn * g.n;
+  Vec3<T> ft;
   if (Eff::friction) {
     const Vec3<T> v_t = v_c - dot(v_c, g.n) * g.n;
-    const Vec3<T> ft = tangential_spring_force(nf, g.n, v_t, g.m_eff, g.dt, trow);
+    ft = tangential_spring_force(nf, g.n, v_t, g.m_eff, g.dt, trow);
     F += ft;
-    atomic_add3(p.torque, g.i, cross(r_i, ft));
-    if (g.j >= 0) atomic_add3(p.torque, g.j, cross(r_j, T(-1) * ft));
   }
-  atomic_add3(p.force, g.i, F);
-  if (g.j >= 0) atomic_add3(p.force, g.j, T(-1) * F);
+  if (buf.enabled()) {
+    store3(buf.force, k, F);
+    store3(buf.torque_i, k, Eff::friction ? cross(r_i, ft) : Vec3<T>());
+    store3(buf.torque_j, k, Eff::friction ? cross(r_j, T(-1) * ft) : Vec3<T>());
+  } else {
+    if (Eff::friction) {
+      atomic_add3(p.torque, g.i, cross(r_i, ft));
+      if (g.j >= 0) atomic_add3(p.torque, g.j, cross(r_j, T(-1) * ft));
+    }
+    atomic_add3(p.force, g.i, F);
+    if (g.j >= 0) atomic_add3(p.force, g.j, T(-1) * F);
+  }
   if (out.normal_force.extent(0) > 0) out.normal_force(k) = fn;
   if (out.overlap.extent(0) > 0) out.overlap(k) = g.delta;
 }
@@ -65,7 +91,8 @@ KOKKOS_INLINE_FUNCTION void finish_contact(const Model& model, const Particles<T
 template <class Model, class T, class Device>
 void compute_pair_forces(const Model& model, const Particles<T, Device>& p, const ContactList<Device>& c,
                          const ContactHistory<T, Device>& h, T dt,
-                         const ContactOutputs<T, Device>& out = {}) {
+                         const ContactOutputs<T, Device>& out = {},
+                         const ContactForceBuffer<T, Device>& buf = {}) {
   using exec = typename Device::execution_space;
   const int nmat = model.nmat;
   Kokkos::parallel_for(
@@ -90,7 +117,7 @@ void compute_pair_forces(const Model& model, const Particles<T, Device>& p, cons
         const Vec3<T> v_c = load3(p.v, i) + cross(load3(p.omega, i), r_i) - load3(p.v, j) -
                             cross(load3(p.omega, j), r_j);
         g.delta_dot = -dot(v_c, g.n);
-        detail::finish_contact(model, p, g, v_c, r_i, r_j, HistoryRow<T, Device>{h.data, k, 0}, out, k);
+        detail::finish_contact(model, p, g, v_c, r_i, r_j, HistoryRow<T, Device>{h.data, k, 0}, out, buf, k);
       });
 }
 
@@ -98,7 +125,8 @@ void compute_pair_forces(const Model& model, const Particles<T, Device>& p, cons
 template <class Model, class T, class Device>
 void compute_wall_forces(const Model& model, const Particles<T, Device>& p, const Walls<T, Device>& w,
                          const ContactList<Device>& c, const ContactHistory<T, Device>& h, T dt,
-                         const ContactOutputs<T, Device>& out = {}) {
+                         const ContactOutputs<T, Device>& out = {},
+                         const ContactForceBuffer<T, Device>& buf = {}) {
   using exec = typename Device::execution_space;
   const int nmat = model.nmat;
   Kokkos::parallel_for(
@@ -116,7 +144,7 @@ void compute_wall_forces(const Model& model, const Particles<T, Device>& p, cons
         const Vec3<T> r_i = T(-1) * (g.R_i - g.delta) * g.n;  // contact point on the plane
         const Vec3<T> v_c = load3(p.v, i) + cross(load3(p.omega, i), r_i) - load3(w.velocity, wl);
         g.delta_dot = -dot(v_c, g.n);
-        detail::finish_contact(model, p, g, v_c, r_i, Vec3<T>(), HistoryRow<T, Device>{h.data, k, 0}, out, k);
+        detail::finish_contact(model, p, g, v_c, r_i, Vec3<T>(), HistoryRow<T, Device>{h.data, k, 0}, out, buf, k);
       });
 }
 
