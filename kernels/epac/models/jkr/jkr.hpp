@@ -1,0 +1,97 @@
+#pragma once
+// Hertz-JKR baseline (Nan Appendix B, (B1)-(B5)), with the interface of models/hertz_mindlin.hpp.
+//   contact radius a from the overlap by (B3), solved on the stable branch (jkr_contact_radius.hpp)
+//   f = 4 E* a^3/(3 R*) - sqrt(8 pi Gamma E*) a^(3/2)          (B1)
+//   the contact forms at delta = 0 (f = -8/9 f_ce) and breaks at the critical overlap
+//   delta_c = -(3/4) (pi^2 Gamma^2 R* / E*^2)^(1/3) (f = -5/9 f_ce): a hysteresis, so one history
+//   field (contact state) when adhesion is on. Force-controlled pull-off: -1.5 pi Gamma R*.
+//   k_n = 2 E* a: the Hertz stiffness at the JKR contact radius. The exact tangent (B2) is
+//   infinite at delta_c and negative between delta_c and the pull-off point, unusable for damping
+//   and k_t; for f > 0 it is within ~4% of 2 E* a (Nan (B13)). So k_t = (4 G*/E*) k_n = 8 G* a.
+//   Damping as Hertz-Mindlin: c from e0 by the exact Hertz relation.
+// Without adhesion (compiled out or Gamma = 0 for the pair) the law is Hertz.
+#include <epac/models/contact_geometry.hpp>
+#include <epac/models/effects.hpp>
+#include <epac/models/jkr/jkr_contact_radius.hpp>
+#include <epac/params/material.hpp>
+#include <epac/params/restitution_damping.hpp>
+#include <epac/state/contact_history.hpp>
+
+#include <vector>
+
+namespace epac {
+
+template <class T>
+struct JkrPair {
+  T E_star, surface_energy, kt_over_kn, c_damp, mu;
+};
+
+template <class T, class Eff = Effects<kAdhesion | kFriction | kDamping>, class Device = DefaultDevice>
+struct Jkr {
+  using scalar_type = T;
+  using effects = Eff;
+  using device_type = Device;
+  static constexpr const char* name = "jkr";
+  static constexpr int normal_history_size = Eff::adhesion ? 1 : 0;  // contact state
+  static constexpr int history_size = normal_history_size + (Eff::friction ? 3 : 0);
+
+  Kokkos::View<JkrPair<T>*, Device> pairs;
+  int nmat = 0;
+
+  KOKKOS_INLINE_FUNCTION NormalForce<T> normal(const ContactGeometry<T>& g,
+                                               const HistoryRow<T, Device>& row) const {
+    NormalForce<T> r;
+    const JkrPair<T> p = pairs(g.pair);
+    const T gamma = Eff::adhesion ? p.surface_energy : T(0);
+    T a;
+    if (gamma > T(0)) {
+      T cs = row(0);
+      if (cs == T(0)) {
+        if (g.delta < T(0)) return r;  // contact forms at delta = 0
+        cs = T(1);
+      }
+      const JkrScales<T> s = jkr_scales(gamma, g.R_eff, p.E_star);
+      const T d = g.delta / s.delta_s;  // delta_s > 0
+      if (!(d >= jkr_critical_overlap_ratio<T>())) {  // breaks at the critical overlap
+        row(0) = T(0);
+        return r;
+      }
+      row(0) = cs;
+      const T x = jkr_contact_radius_ratio(d);
+      a = x * s.a0;
+      r.f = s.f_ce * jkr_force_ratio(x);
+    } else {
+      if (Eff::adhesion) row(0) = T(0);
+      if (g.delta <= T(0)) return r;
+      a = math::sqrt(g.R_eff * g.delta);  // Hertz
+      r.f = T(4) / T(3) * p.E_star * a * g.delta;
+    }
+    r.active = true;
+    r.k_n = T(2) * p.E_star * a;
+    if (Eff::damping) { r.damping = p.c_damp; r.damping_t = p.c_damp; }
+    if (Eff::friction) { r.k_t = p.kt_over_kn * r.k_n; r.mu = p.mu; }
+    return r;
+  }
+
+  // Host: builds the pair table from validated materials (nmat x nmat, row-major).
+  static Jkr create(const std::vector<Material>& materials) {  // host
+    Jkr m;
+    m.nmat = static_cast<int>(materials.size());
+    for (const auto& mat : materials) mat.validate();
+    m.pairs = Kokkos::View<JkrPair<T>*, Device>("jkr.pairs", m.nmat * m.nmat);
+    auto h = Kokkos::create_mirror_view(m.pairs);
+    for (int a = 0; a < m.nmat; ++a)
+      for (int b = 0; b < m.nmat; ++b) {
+        const Material& A = materials[a];
+        const Material& B = materials[b];
+        if (A.rigid && B.rigid) { h(a * m.nmat + b) = {T(0), T(0), T(0), T(0), T(0)}; continue; }
+        const PairProperties pp = pair_properties(A, B);
+        h(a * m.nmat + b) = {T(pp.E_star), T(pp.surface_energy), T(4.0 * pp.G_star / pp.E_star),
+                             T(hertz_damping_coefficient(pp.restitution)), T(pp.friction)};
+      }
+    Kokkos::deep_copy(m.pairs, h);
+    return m;
+  }
+};
+
+}  // namespace epac

@@ -1,0 +1,101 @@
+#pragma once
+// Nan et al. 2022 linear elasto-plastic adhesive contact model, with the interface of
+// models/hertz_mindlin.hpp.
+//   normal force:  the state machine of nan2022_normal_law.hpp, Nan (3)-(20)
+//   k_n:           stiffness of the current branch (k_p, k_e or k_c), Nan Sec. 2.2
+//   k_t:           (4 G*/E*) k_n, Nan (22)
+//   damping:       F_d = 2 gamma beta sqrt(m* k_n) V_n, Nan (24)-(26), beta = 1 before the contact
+//                  yields and beta_yielded (default 0.1) after, Nan Sec. 2.3
+// History (only for compiled-in effects): alpha_max (plasticity), contact state (adhesion).
+// An adhesive contact stays `active` at negative overlap down to alpha_jp, so contact detection
+// must keep pairs whose gap is up to |alpha_jp| (see nan2022_pair_report: alpha_je).
+#include <epac/models/contact_geometry.hpp>
+#include <epac/models/effects.hpp>
+#include <epac/models/nan2022/nan2022_normal_law.hpp>
+#include <epac/params/nan2022/nan2022_parameters.hpp>
+#include <epac/state/contact_history.hpp>
+
+#include <vector>
+
+namespace epac {
+
+template <class T, class Eff = Effects<kAdhesion | kPlasticity | kFriction | kDamping>,
+          class Device = DefaultDevice>
+struct Nan2022 {
+  using scalar_type = T;
+  using effects = Eff;
+  using device_type = Device;
+  static constexpr const char* name = "nan2022";
+  static constexpr int alpha_max_field = 0;                        // if plasticity
+  static constexpr int state_field = Eff::plasticity ? 1 : 0;      // if adhesion
+  static constexpr int normal_history_size = (Eff::plasticity ? 1 : 0) + (Eff::adhesion ? 1 : 0);
+  static constexpr int history_size = normal_history_size + (Eff::friction ? 3 : 0);
+
+  Kokkos::View<Nan2022PairConstants<T>*, Device> pairs;
+  int nmat = 0;
+
+  KOKKOS_INLINE_FUNCTION NormalForce<T> normal(const ContactGeometry<T>& g,
+                                               const HistoryRow<T, Device>& row) const {
+    const Nan2022PairConstants<T> p = pairs(g.pair);
+    const Nan2022ContactConstants<T> c =
+        nan2022_contact_constants<T, Eff::adhesion, Eff::plasticity>(p, g.R_eff);
+    T alpha_max = Eff::plasticity ? row(alpha_max_field) : T(0);
+    T cs = Eff::adhesion ? row(state_field) : T(0);
+    const Nan2022NormalState<T> s =
+        nan2022_normal_step<T, Eff::plasticity>(c, g.delta, alpha_max, cs, p.unloading_law, p.pull_off_law);
+    if (Eff::plasticity) row(alpha_max_field) = alpha_max;
+    if (Eff::adhesion) row(state_field) = cs;
+    NormalForce<T> r;
+    if (!s.active) return r;
+    r.active = true;
+    r.f = s.f;
+    r.k_n = s.k_n;
+    if (Eff::damping) {
+      const T beta = s.yielded ? p.beta_yielded : T(1);
+      r.damping = T(2) * p.damping_ratio * beta;  // Nan (24), (26)
+      r.damping_t = r.damping;                    // Nan (25)
+    }
+    if (Eff::friction) { r.k_t = p.kt_over_kn * r.k_n; r.mu = p.mu; }
+    return r;
+  }
+
+  // Host: a pair table from per-pair constants (nmat x nmat, row-major), each validated.
+  static Nan2022 create_from_pairs(int nmat, const std::vector<Nan2022PairConstants<double>>& table) {  // host
+    require_range("nan2022 material count", nmat, 1, Bound::closed, 1 << 15, Bound::closed);
+    require_range("nan2022 pair table size", static_cast<double>(table.size()), nmat * nmat, Bound::closed,
+                  nmat * nmat, Bound::closed);
+    Nan2022 m;
+    m.nmat = nmat;
+    m.pairs = Kokkos::View<Nan2022PairConstants<T>*, Device>("nan2022.pairs", nmat * nmat);
+    auto h = Kokkos::create_mirror_view(m.pairs);
+    for (int k = 0; k < nmat * nmat; ++k) {
+      const Nan2022PairConstants<double>& d = table[k];
+      // a rigid-rigid entry is all zero (never used): skip its validation
+      if (d.E_star != 0.0) nan2022_validate(d, "nan2022 pair " + std::to_string(k));  // host
+      Nan2022PairConstants<T> t;
+      t.E_star = T(d.E_star); t.surface_energy = T(d.surface_energy); t.yield_pressure = T(d.yield_pressure);
+      t.yields = d.yields; t.kel_fixed = d.kel_fixed; t.kel_value = T(d.kel_value);
+      t.kp_fixed = d.kp_fixed; t.kp_value = T(d.kp_value);
+      t.unloading_law = d.unloading_law; t.pull_off_law = d.pull_off_law;
+      t.kt_over_kn = T(d.kt_over_kn); t.damping_ratio = T(d.damping_ratio);
+      t.beta_yielded = T(d.beta_yielded); t.mu = T(d.mu);
+      h(k) = t;
+    }
+    Kokkos::deep_copy(m.pairs, h);
+    return m;
+  }
+
+  // Host: the pair table from validated materials with the same options for every pair.
+  static Nan2022 create(const std::vector<Material>& materials, const Nan2022Options& opt = {}) {  // host
+    const int n = static_cast<int>(materials.size());
+    std::vector<Nan2022PairConstants<double>> table(static_cast<std::size_t>(n) * n);  // host
+    for (int a = 0; a < n; ++a)
+      for (int b = 0; b < n; ++b) {
+        if (materials[a].rigid && materials[b].rigid) { table[a * n + b] = Nan2022PairConstants<double>{}; continue; }
+        table[a * n + b] = nan2022_pair_constants(materials[a], materials[b], opt);
+      }
+    return create_from_pairs(n, table);
+  }
+};
+
+}  // namespace epac

@@ -1,0 +1,131 @@
+#pragma once
+// Nan et al. 2022 linear elasto-plastic adhesive contact: the per-material-pair constants (POD,
+// device) and the size-dependent constants of one contact, derived from them at the contact's
+// equivalent radius R* (Nan (4)-(9), (27)-(31), (35)-(37), (52)).
+//
+// Why per contact: f_ce = 1.5 pi Gamma R* (Nan (5)) and the default k_el = pi R* p_y (Nan (52))
+// scale with R*, so in a polydisperse packing every contact has its own constants. The pair table
+// keeps only what does not depend on size; this header derives the rest (a few sqrt/cbrt).
+#include <epac/core/kokkos_compat.hpp>
+
+namespace epac {
+
+// How k_e grows with the maximum overlap after yield (Nan Sec. 3.3). With k_el known, Nan (44)
+// and (46) are the same law, and Nan (48) is the same as k_p + (k_el - k_p) sqrt(a_max/a_y)
+// (substitute Nan (49)). So the device needs only these two forms.
+enum class Nan2022UnloadingLaw : int {
+  sqrt_max_overlap = 0,  // k_e = k_el sqrt(a_max / a_y)                  Nan (44) = (46), default
+  plastic_offset = 1,    // k_e = k_p + (k_el - k_p) sqrt(a_max / a_y)     Nan (48) with (49)
+};
+
+// Maximum pull-off force after yield (Nan Sec. 3.4, Table 4).
+enum class Nan2022PullOffLaw : int {
+  work_balance = 0,      // Nan (59) with A from Nan (56), default
+  effective_radius = 1,  // Nan (64)
+  stiffness_power = 2,   // Nan (67): f_cp = f_ce (k_e/k_el)^(3/2)
+};
+
+// Everything of one material pair the force law needs that does not depend on R*. POD, so it
+// lives in a device View. Built and validated on the host (params/nan2022/nan2022_parameters.hpp).
+template <class T>
+struct Nan2022PairConstants {
+  T E_star;          // E* [Pa] > 0
+  T surface_energy;  // Gamma [J/m^2] >= 0; 0 = no adhesion for this pair
+  T yield_pressure;  // p_y [Pa] > 0 (softer body); read only when yields != 0
+  int yields;        // 0: no yield for this pair (p_y infinite): the plastic branch never opens
+  int kel_fixed;     // 0: k_el = kel_value * R* (Nan (52): kel_value = pi p_y); 1: k_el = kel_value [N/m]
+  T kel_value;
+  int kp_fixed;      // 0: k_p = kp_value * k_el (default kp_value = 1); 1: k_p = kp_value [N/m]
+  T kp_value;
+  int unloading_law; // Nan2022UnloadingLaw
+  int pull_off_law;  // Nan2022PullOffLaw
+  T kt_over_kn;      // 4 G*/E*, Nan (22)
+  T damping_ratio;   // gamma of Nan (26) with beta = 1 (from e0)
+  T beta_yielded;    // damping factor beta after yield (Nan Sec. 2.3; default 0.1)
+  T mu;              // sliding friction coefficient
+};
+
+// The size-dependent constants of one contact.
+template <class T>
+struct Nan2022ContactConstants {
+  T f_ce;     // pull-off force before yield, 1.5 pi Gamma R*            Nan (5)
+  T f_0;      // force jump at first contact, 8/9 f_ce                    Nan (4)
+  T k_el;     // loading stiffness before yield (lower limit of k_e)
+  T k_p;      // plastic loading stiffness (<= k_el, see below)
+  T f_y;      // yield force                                               Nan (28); 0 if no yield
+  T alpha_0;  // zero-force overlap before yield, f_0/k_el                 Nan (6)
+  T alpha_y;  // yield overlap alpha_0 + f_y/k_el                          Nan (7), (29); = alpha_0 if no yield
+  T el_over_cl;  // k_el/k_cl = k_e/k_c, >= 0 (0 only in the clamped case below)
+  T A;        // coefficient of the pull-off quadratic                     Nan (56)
+  bool yields;
+};
+
+namespace nan2022_detail {
+// k_el/k_cl from Nan (35)-(37) and Appendix A. The text's (38)-(39) print this ratio upside down
+// (k_cl/k_el); solving (35) W_JKR = (56/162) f_ce^2/k_cl + (17/162) f_ce^2/k_el for k_cl gives
+//   k_el/k_cl = W_JKR k_el / ((56/162) f_ce^2) - 17/56
+// and with W_JKR = 7.09 (Gamma^5 R*^4 / E*^2)^(1/3) (Nan (37)) and f_ce = 1.5 pi Gamma R*:
+//   k_el/k_cl = c k_el / (Gamma^(1/3) E*^(2/3) R*^(2/3)) - 17/56,   c = 7.09 / ((56/162) (1.5 pi)^2)
+// = 0.9236... (the paper's 0.92), 17/56 = 0.3036 (the paper's 0.3). (A1) and (A2) also print
+// k_cl where k_el belongs in the 17/162 and 64/162 terms.
+template <class T>
+KOKKOS_INLINE_FUNCTION constexpr T jkr_work_coefficient() { return T(7.09); }
+template <class T>
+KOKKOS_INLINE_FUNCTION T cohesive_ratio_coefficient() {
+  const T pi = constants<T>::pi;
+  return jkr_work_coefficient<T>() / (T(56) / T(162) * T(2.25) * pi * pi);
+}
+}  // namespace nan2022_detail
+
+// Derives the contact's constants at equivalent radius R_star.
+// Domains: R_star > 0, E* > 0, k_el > 0, p_y > 0 (host-validated; R_star > 0 in every contact).
+// Adhesion / Plasticity are the compile-time effects: off means Gamma = 0 / no yield, at no cost.
+template <class T, bool Adhesion = true, bool Plasticity = true>
+KOKKOS_INLINE_FUNCTION Nan2022ContactConstants<T> nan2022_contact_constants(
+    const Nan2022PairConstants<T>& p, T R_star) {
+  const T pi = constants<T>::pi;
+  Nan2022ContactConstants<T> c;
+  const T gamma = Adhesion ? p.surface_energy : T(0);
+  c.f_ce = T(1.5) * pi * gamma * R_star;
+  c.f_0 = T(8) / T(9) * c.f_ce;
+  c.k_el = p.kel_fixed ? p.kel_value : p.kel_value * R_star;
+  c.alpha_0 = c.f_0 / c.k_el;  // k_el > 0
+  c.yields = Plasticity && p.yields != 0;
+  if (c.yields) {
+    // Nan (28) with (30): f_y = f_y0 sqrt(6/5 k_el / (pi R* p_y)); written with s = p_y/E* so
+    // that no intermediate overflows in float (E*^4 of (27) would for E* > 1e9 Pa).
+    const T s = p.yield_pressure / p.E_star;
+    const T f_y0 = pi * pi * pi * R_star * R_star * p.yield_pressure * s * s / T(6);
+    c.f_y = f_y0 * math::sqrt(T(6) / T(5) * c.k_el / (pi * R_star * p.yield_pressure));  // arg > 0
+    c.alpha_y = c.alpha_0 + c.f_y / c.k_el;
+    const T kp = p.kp_fixed ? p.kp_value : p.kp_value * c.k_el;
+    // k_p <= k_el keeps k_e >= k_p on every unloading line (Nan's own convention for Fig. 7,
+    // k_p = min(k_p, k_e)); otherwise the unloading line would be softer than the loading line
+    // and Nan (20) would send unloading back down the plastic line.
+    c.k_p = math::min(kp, c.k_el);
+  } else {
+    c.f_y = T(0);
+    c.alpha_y = c.alpha_0;
+    c.k_p = c.k_el;
+  }
+  if (c.f_ce > T(0)) {
+    // cbrt argument Gamma (E* R*)^2 > 0 here (Gamma > 0). A negative ratio means the linear
+    // elastic branch alone stores more than W_JKR (CY below ~1e-3 with Nan (52)); there is no
+    // room for a cohesive branch, so it is clamped to zero length (k_c -> infinity). The host
+    // report flags this case (Nan2022PairReport::cohesive_ratio_clamped).
+    const T er = p.E_star * R_star;
+    const T denom = math::cbrt(gamma) * math::cbrt(er * er);
+    c.el_over_cl = math::max(nan2022_detail::cohesive_ratio_coefficient<T>() * c.k_el / denom -
+                                 T(17) / T(56), T(0));
+    c.A = (T(16) / T(27)) / (T(56) / T(162) * c.el_over_cl + T(17) / T(162));  // denominator >= 17/162
+  } else {
+    // Gamma = 0: k_cl ~ Gamma^(1/3) -> 0 but the cohesive branch length (4/9) f_cp/k_c ~
+    // Gamma^(1/3) -> 0 too; f_cp = f_ce = 0 makes every adhesive term vanish, so neither the
+    // ratio nor A is used. Set to 0 rather than the infinite limit.
+    c.el_over_cl = T(0);
+    c.A = T(0);
+  }
+  return c;
+}
+
+}  // namespace epac
