@@ -1,0 +1,65 @@
+// Cost of each contact law in one run (ratios are what to read: the machine is shared):
+// contact-steps per second of one force pass on the same dense packing (about 6 contacts per
+// particle, 1.0e5 and 1.0e6 contacts), for Hertz-Mindlin, Hertz-JKR and Nan et al. 2022, with all
+// their effects and with adhesion or plasticity compiled out. Friction and damping are on
+// everywhere. The packing's overlaps (about 0.1 R) put every Nan contact past yield.
+#include <benchmark/benchmark.h>
+#include <epac/compute/contact_forces.hpp>
+#include <epac/models/hertz_mindlin.hpp>
+#include <epac/models/jkr/jkr.hpp>
+#include <epac/models/nan2022/nan2022.hpp>
+#include <support/dense_packing.hpp>
+
+using namespace epac;
+
+namespace {
+// A cohesive polymer powder (the Ning particle of Nan Table 2, at R = 1 mm).
+Material powder() {
+  Material m;
+  m.name = "powder"; m.youngs_modulus = 1.2e9; m.poisson_ratio = 0.3; m.density = 1000;
+  m.restitution = 0.81; m.friction = 0.3; m.surface_energy = 0.2; m.yield_stress = 35.3e6;
+  return m;
+}
+Material powder_no_adhesion() { Material m = powder(); m.surface_energy = 0; return m; }
+
+template <class Model>
+void run(benchmark::State& state, const Model& model) {
+  using T = typename Model::scalar_type;
+  using D = typename Model::device_type;
+  auto pk = bench::make_dense_packing<T, D>(static_cast<int>(state.range(0)));
+  ContactHistory<T, D> h(pk.contacts.count, Model::history_size);
+  for (auto _ : state) {
+    zero_forces(pk.particles);
+    compute_pair_forces(model, pk.particles, pk.contacts, h, T(1e-9));
+    Kokkos::fence();
+  }
+  state.SetItemsProcessed(state.iterations() * pk.contacts.count);
+  state.counters["contacts_per_s"] =
+      benchmark::Counter(double(pk.contacts.count), benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["history_bytes_per_contact"] = Model::history_size * sizeof(T);
+}
+
+constexpr unsigned FD = kFriction | kDamping;
+
+template <class T> void BM_HertzMindlin(benchmark::State& s) { run(s, HertzMindlin<T, Effects<FD>>::create({powder()})); }
+template <class T> void BM_HertzJKR(benchmark::State& s) { run(s, Jkr<T, Effects<FD | kAdhesion>>::create({powder()})); }
+template <class T> void BM_Nan2022(benchmark::State& s) {
+  run(s, Nan2022<T, Effects<FD | kAdhesion | kPlasticity>>::create({powder()}));
+}
+template <class T> void BM_Nan2022_NoAdhesion(benchmark::State& s) {
+  run(s, Nan2022<T, Effects<FD | kPlasticity>>::create({powder_no_adhesion()}));
+}
+
+void sizes(benchmark::internal::Benchmark* b) {
+  for (int n : {33, 70}) b->Arg(n);
+  b->Unit(benchmark::kMillisecond)->UseRealTime();
+}
+}  // namespace
+
+BENCHMARK_TEMPLATE(BM_HertzMindlin, double)->Apply(sizes);
+BENCHMARK_TEMPLATE(BM_HertzJKR, double)->Apply(sizes);
+BENCHMARK_TEMPLATE(BM_Nan2022, double)->Apply(sizes);
+BENCHMARK_TEMPLATE(BM_Nan2022_NoAdhesion, double)->Apply(sizes);
+BENCHMARK_TEMPLATE(BM_HertzMindlin, float)->Apply(sizes);
+BENCHMARK_TEMPLATE(BM_HertzJKR, float)->Apply(sizes);
+BENCHMARK_TEMPLATE(BM_Nan2022, float)->Apply(sizes);
