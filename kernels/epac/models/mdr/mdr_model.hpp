@@ -1,0 +1,281 @@
+#pragma once
+// The MDR contact model (Zunker & Kamrin, Part I) with the interface of models/hertz_mindlin.hpp:
+// `normal(g, row)` for the generic contact kernel (compute/contact_forces.hpp), a per-pair table
+// indexed by g.pair, history fields only for enabled effects.
+//
+// - Wall contact (g.j == -1): one side, particle i against the wall as a rigid flat.
+// - Pair: two sides split by the rigid flat at the contact plane (mdr_pair_split.hpp); side 0 is
+//   the particle with the smaller global id; the pair force is the mean of the sides' forces.
+// - Each side is mdr_side_force (elastic, fully plastic, adhesive) with E_eff = E/(1-nu^2) of its
+//   own particle.
+// - Adhesion of a pair: the flat at the contact plane is fictitious, so the surface energy Delta
+//   gamma of the real interface is shared by the two sides in proportion to their share of the
+//   edge springs' elastic energy: the sides' springs are in series (extensions ~ 1/E_eff,s), so
+//   side s gets gamma_s = Delta gamma E*/E_eff,s (equal spheres: Delta gamma / 2 each; a wall,
+//   where E* = E_eff: Delta gamma). With it an elastic pair reproduces JKR between the two spheres
+//   exactly (delta = a^2/R* - sqrt(2 pi a Delta gamma/E*), pull-off 3/2 pi Delta gamma R*); giving
+//   each side the full Delta gamma (as the authors' code appears to do) doubles the pull-off force
+//   of two equal spheres.
+// - Damping: NormalForce::damping = c from the restitution by the exact Hertz relation
+//   (params/restitution_damping.hpp), with k_n = 2 E* a-bar, E* the pair's composite modulus (rigid
+//   wall: the particle's E_eff) and a-bar the mean of the sides' MDR contact half-widths. In the
+//   elastic regime this is Hertz's tangent stiffness 2 E* sqrt(R* delta) (same a for both sides of
+//   a pair), so an elastic MDR impact has exactly the requested restitution; after yield it is the
+//   flat-punch unloading stiffness of the MDR springs. Damping only while the force is compressive
+//   (damp_compressive_only). The authors' code uses k_n = E* R* instead.
+// - Friction: the foundation's tangential spring with k_t = (4 G*/E*) k_n = 8 G* a-bar (Mindlin,
+//   Nan (22)); its Coulomb limit mu |f| uses the MDR force including adhesive tension.
+// - A contact is inactive (its history reset, tangential history too) once the apparent overlap is
+//   <= 0 and no side holds an adhesive radius; the grown radius stays.
+// - Radius growth: each side's terms go to the particle sums (mdr_radius_growth.hpp); call
+//   bind(particles) once and update_radii() after every force pass (design.md section 4 step 4).
+#include <epac/models/contact_geometry.hpp>
+#include <epac/models/effects.hpp>
+#include <epac/models/mdr/mdr_pair_split.hpp>
+#include <epac/models/mdr/mdr_parameters.hpp>
+#include <epac/models/mdr/mdr_radius_growth.hpp>
+#include <epac/models/mdr/mdr_side_force.hpp>
+#include <epac/state/contact_history.hpp>
+#include <epac/state/particles.hpp>
+
+#include <array>
+#include <vector>
+
+namespace epac {
+
+// Per-contact outputs (issue item 6). Pair values are means over the two sides.
+template <class T>
+struct MdrContactOutput {
+  T force = 0;            // MDR force on i along n (no damping), positive = compressive
+  T area = 0;             // contact area (42) with c_A
+  T mean_pressure = 0;    // force / area (0 without area)
+  T delta_max = 0;        // pair: largest total apparent overlap; wall: the side's delta_max
+  int yielded = 0;        // number of yielded sides
+  T adhesive_radius = 0;  // stored adhesive contact radius
+  int sides = 0;
+  T side_force[2] = {0, 0}, side_overlap[2] = {0, 0}, side_area[2] = {0, 0};
+  T side_delta_max[2] = {0, 0}, side_delta_p[2] = {0, 0}, side_radius[2] = {0, 0};
+  bool active = false;
+};
+
+template <class T, class Eff = AllEffects, class Device = DefaultDevice>
+struct Mdr {
+  using scalar_type = T;
+  using effects = Eff;
+  using device_type = Device;
+  static constexpr const char* name = "mdr";
+
+  // --- history layout: [pair fields][side 0][side 1] ---
+  static constexpr int kPlasticFields = Eff::plasticity ? 4 : 0;  // delta_o,max, yielded, c_A, delta_p
+  static constexpr int kAdhesionFields = Eff::adhesion ? 1 : 0;   // a
+  static constexpr int kGrowthFields = Eff::radius_growth ? 2 : 0;  // delta_o,prev, eps_c,prev
+  static constexpr int side_fields = kPlasticFields + kAdhesionFields + kGrowthFields;
+  static constexpr int pair_fields = Eff::plasticity ? 1 : 0;  // largest total delta_o (19)
+  static constexpr int normal_history_size = pair_fields + 2 * side_fields;
+  static constexpr int history_size = normal_history_size + (Eff::friction ? 3 : 0);
+
+  Kokkos::View<MdrSideConstants<T>*, Device> sides;  // per material
+  Kokkos::View<MdrPairConstants<T>*, Device> pairs;  // per material pair, mat_i * nmat + mat_j
+  int nmat = 0;
+  T xi = T(1);
+  MdrGrowthState<T, Device> growth;  // bound by bind() when Eff::radius_growth
+
+  // --- history access ---
+  static KOKKOS_INLINE_FUNCTION int side_base(int s) { return pair_fields + s * side_fields; }
+
+  static KOKKOS_INLINE_FUNCTION MdrSideState<T> load_side(const HistoryRow<T, Device>& row, int s) {
+    MdrSideState<T> st;
+    const int b = side_base(s);
+    if (Eff::plasticity) {
+      st.delta_o_max = row(b + 0); st.yielded = row(b + 1); st.c_A = row(b + 2); st.delta_p = row(b + 3);
+    }
+    if (Eff::adhesion) st.a_adh = row(b + kPlasticFields);
+    if (Eff::radius_growth) {
+      st.delta_o_prev = row(b + kPlasticFields + kAdhesionFields);
+      st.eps_prev = row(b + kPlasticFields + kAdhesionFields + 1);
+    }
+    return st;
+  }
+  static KOKKOS_INLINE_FUNCTION void store_side(const HistoryRow<T, Device>& row, int s,
+                                                const MdrSideState<T>& st) {
+    const int b = side_base(s);
+    if (Eff::plasticity) {
+      row(b + 0) = st.delta_o_max; row(b + 1) = st.yielded; row(b + 2) = st.c_A; row(b + 3) = st.delta_p;
+    }
+    if (Eff::adhesion) row(b + kPlasticFields) = st.a_adh;
+    if (Eff::radius_growth) {
+      row(b + kPlasticFields + kAdhesionFields) = st.delta_o_prev;
+      row(b + kPlasticFields + kAdhesionFields + 1) = st.eps_prev;
+    }
+  }
+
+  // Evaluates the contact; Write = true advances history and adds growth terms (the force pass),
+  // Write = false only reads (outputs). A second evaluation at the same geometry right after a
+  // force pass returns the same force (the state reached is a fixed point of the law).
+  template <bool Write>
+  KOKKOS_INLINE_FUNCTION MdrContactOutput<T> evaluate(const ContactGeometry<T>& g,
+                                                      const HistoryRow<T, Device>& row,
+                                                      NormalForce<T>* nf_out) const {
+    MdrContactOutput<T> o;
+    const bool is_pair = g.j >= 0;
+    const int nsides = is_pair ? 2 : 1;
+    o.sides = nsides;
+    const int mi = g.pair / nmat, mj = g.pair % nmat;
+    // sides ordered by global id
+    const bool swap = is_pair && !g.i_is_first;
+    const int part[2] = {swap ? g.j : g.i, swap ? g.i : g.j};
+    const T Rs[2] = {swap ? g.R_j : g.R_i, swap ? g.R_i : g.R_j};
+    const int mats[2] = {swap ? mj : mi, swap ? mi : mj};
+    MdrSideState<T> st[2] = {load_side(row, 0), load_side(row, 1)};
+
+    bool adhesive_hold = false;
+    if (Eff::adhesion)
+      for (int s = 0; s < nsides; ++s) adhesive_hold = adhesive_hold || st[s].a_adh > T(0);
+    if (!(g.delta > T(0)) && !adhesive_hold) {
+      // open contact: everything is reset (the grown radius stays)
+      if (Write)
+        for (int k = 0; k < normal_history_size; ++k) row(k) = T(0);
+      if (nf_out) *nf_out = NormalForce<T>();
+      return o;
+    }
+    o.active = true;
+
+    // growth of each side's radius, R - R_o (0 without radius growth): delta_o = delta - growth
+    T growth_of[2] = {T(0), T(0)};
+    if (Eff::radius_growth && growth.volume.extent(0) > 0)
+      for (int s = 0; s < nsides; ++s) growth_of[s] = Rs[s] - growth.radius0(part[s]);
+    T dside[2] = {g.delta, T(0)};
+    if (is_pair) {
+      // largest total overlap by (19): running maximum of the total delta_o, plus both growths
+      const T shift = growth_of[0] + growth_of[1];
+      T dmax = g.delta;
+      if (Eff::plasticity) {
+        const T dmax_o = math::max(row(0), g.delta - shift);
+        if (Write) row(0) = dmax_o;
+        dmax = dmax_o + shift;
+      }
+      const MdrSideOverlaps<T> so = mdr_split_overlap(g.delta, dmax, Rs[0], Rs[1], st[0].delta_p, st[1].delta_p);
+      dside[0] = so.d0;
+      dside[1] = so.d1;
+      o.delta_max = dmax;
+    }
+
+    const MdrPairConstants<T> pc = pairs(g.pair);
+    T F = T(0), a_sum = T(0), area_sum = T(0), a_adh_sum = T(0);
+    for (int s = 0; s < nsides; ++s) {
+      const MdrSideConstants<T> c = sides(mats[s]);
+      // Each side's share of the surface energy: gamma_s = Delta gamma E* / E_eff,s (see the header)
+      const T gamma_s = Eff::adhesion ? pc.gamma * pc.E_star / c.E_eff : T(0);
+      const MdrSideResult<T> r =
+          mdr_side_force<Eff::plasticity, Eff::adhesion>(c, gamma_s, xi, dside[s], Rs[s], growth_of[s], st[s]);
+      F += r.F;
+      a_sum += r.a;
+      area_sum += r.area;
+      a_adh_sum += st[s].a_adh;
+      o.yielded += st[s].yielded != T(0) ? 1 : 0;
+      o.side_force[s] = r.F;
+      o.side_overlap[s] = dside[s];
+      o.side_area[s] = r.area;
+      o.side_delta_max[s] = r.delta_max;
+      o.side_delta_p[s] = st[s].delta_p;
+      o.side_radius[s] = r.a;
+      if (Write && Eff::radius_growth && growth.volume.extent(0) > 0) {  // bound
+        const bool plastic_loading = r.plastic && r.loading && r.F > T(0);
+        mdr_growth_add_side(growth, part[s], c.kappa, r.F, dside[s], Rs[s], plastic_loading,
+                            st[s].delta_o_prev, st[s].eps_prev);
+      }
+      if (Write) store_side(row, s, st[s]);
+    }
+    const T inv = T(1) / T(nsides);
+    o.force = F * inv;
+    o.area = area_sum * inv;
+    o.mean_pressure = o.area > T(0) ? o.force / o.area : T(0);
+    o.adhesive_radius = a_adh_sum * inv;
+    if (!is_pair) o.delta_max = o.side_delta_max[0];
+
+    if (nf_out) {
+      NormalForce<T> nf;
+      nf.active = true;
+      nf.f = o.force;
+      nf.k_n = T(2) * pc.E_star * a_sum * inv;
+      if (Eff::damping) {
+        nf.damping = pc.c_damp;
+        nf.damping_t = pc.c_damp;
+        nf.damp_compressive_only = true;
+      }
+      if (Eff::friction) {
+        nf.k_t = pc.kt_over_kn * nf.k_n;
+        nf.mu = pc.mu;
+      }
+      *nf_out = nf;
+    }
+    return o;
+  }
+
+  KOKKOS_INLINE_FUNCTION NormalForce<T> normal(const ContactGeometry<T>& g,
+                                               const HistoryRow<T, Device>& row) const {
+    NormalForce<T> nf;
+    evaluate<true>(g, row, &nf);
+    return nf;
+  }
+
+  // Per-contact outputs from the history row, read-only (call after the force pass, before
+  // update_radii, with the geometry the force pass saw).
+  KOKKOS_INLINE_FUNCTION MdrContactOutput<T> outputs(const ContactGeometry<T>& g,
+                                                     const HistoryRow<T, Device>& row) const {
+    return evaluate<false>(g, row, nullptr);
+  }
+
+  // --- host ---
+
+  // Builds the tables. Materials used by particles must be deformable; rigid ones serve walls.
+  static Mdr create(const std::vector<Material>& materials, const MdrOptions& opt = {}) {  // host
+    opt.validate();
+    Mdr m;
+    m.nmat = static_cast<int>(materials.size());
+    m.xi = T(opt.xi);
+    m.sides = Kokkos::View<MdrSideConstants<T>*, Device>("mdr.sides", m.nmat);
+    m.pairs = Kokkos::View<MdrPairConstants<T>*, Device>("mdr.pairs", m.nmat * m.nmat);
+    auto hs = Kokkos::create_mirror_view(m.sides);
+    auto hp = Kokkos::create_mirror_view(m.pairs);
+    for (int a = 0; a < m.nmat; ++a) {
+      materials[a].validate();
+      hs(a) = materials[a].rigid ? MdrSideConstants<T>{} : mdr_side_constants<T>(materials[a], opt.yield_onset);
+    }
+    for (int a = 0; a < m.nmat; ++a)
+      for (int b = 0; b < m.nmat; ++b)
+        hp(a * m.nmat + b) = (materials[a].rigid && materials[b].rigid)
+                                 ? MdrPairConstants<T>{}
+                                 : mdr_pair_constants<T>(materials[a], materials[b]);
+    Kokkos::deep_copy(m.sides, hs);
+    Kokkos::deep_copy(m.pairs, hp);
+    m.growth.rule = opt.growth_rule;
+    m.growth.radius_cap = T(opt.radius_cap);
+    m.growth.denominator_floor = T(opt.denominator_floor);
+    m.growth.volume_floor = T(opt.volume_floor);
+    return m;
+  }
+
+  // Attaches the particles' R_o and R and allocates V and the growth sums (radius growth only).
+  void bind(const Particles<T, Device>& p) {
+    if (Eff::radius_growth) growth.attach(p.radius0, p.radius);
+  }
+
+  // Applies the growth sums of the last force pass: new R and V per particle, sums reset.
+  void update_radii() const {
+    if (Eff::radius_growth && growth.bound()) mdr_update_radii(growth);
+  }
+
+  // Cumulative guard counts of the radius update (MdrGrowthGuard order); zeros without growth.
+  std::array<int, kMdrGuardCount> guard_hits() const {
+    std::array<int, kMdrGuardCount> out{};
+    if (Eff::radius_growth && growth.bound()) {
+      auto h = Kokkos::create_mirror_view(growth.guard_hits);
+      Kokkos::deep_copy(h, growth.guard_hits);
+      for (int k = 0; k < kMdrGuardCount; ++k) out[k] = h(k);
+    }
+    return out;
+  }
+};
+
+}  // namespace epac

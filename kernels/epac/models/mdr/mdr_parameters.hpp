@@ -1,0 +1,165 @@
+#pragma once
+// MDR (Zunker & Kamrin, Part I) constants and options, host side: per-material "side" constants
+// (one particle against a rigid flat), per-material-pair constants (adhesion, damping, friction),
+// the options where the paper and the authors' implementation differ, and validation.
+//
+// Every side of an MDR contact is a particle against a rigid flat (mdr-reference-notes.md), so a
+// side uses E_eff = E/(1 - nu^2) of its own particle, never the composite modulus of two bodies.
+#include <epac/core/root_solve.hpp>
+#include <epac/models/mdr/mdr_ellipse.hpp>
+#include <epac/params/material.hpp>
+#include <epac/params/restitution_damping.hpp>
+#include <epac/params/validation.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+namespace epac {
+
+// Which contacts feed the apparent-radius update MDR (37).
+enum class MdrGrowthRule {
+  plastic_loading,  // authors' implementation (default): sides in plastic loading with a
+                    // positive MDR force; each side's Delta V^e from its own Christoffersen term
+  all_contacts      // paper, Appendix E: every touching side; Delta V^e from the particle's volume
+};
+
+// Where the elastic regime ends (Section 5.6.5).
+enum class MdrYieldOnset {
+  // Default. The mean pressure of the elastic law itself, F_el(delta) / (pi delta R) with F_el
+  // the ellipse force (30)-(31) and pi delta R the elastic area (42), meets p_Y. It equals the
+  // Hertz mean pressure (40) to first order in delta/R (they differ by a factor 1 - 0.075 delta/R)
+  // and, with c_A from (43), makes force, area and mean pressure exactly continuous at delta_Y.
+  elastic_law,
+  // The paper's (41) read literally: the Hertz mean pressure (40) meets p_Y. Mean pressure and
+  // area are continuous, but the force jumps at delta_Y by the difference between the Hertz force
+  // and the ellipse force (relative 0.075 delta_Y/R: 6.5e-5 at E/Y = 200, 2% at E/Y = 6.25).
+  hertz_40
+};
+
+struct MdrOptions {
+  // xi of MDR (15): 1 = displacement control (Appendix E's choice), 3 = force control.
+  int xi = 1;
+  MdrGrowthRule growth_rule = MdrGrowthRule::plastic_loading;
+  MdrYieldOnset yield_onset = MdrYieldOnset::elastic_law;
+  // R never exceeds radius_cap * R_o (the authors' implementation stops growth at 1.5 R_o).
+  double radius_cap = 1.5;
+  // Guard of the denominator of MDR (37), D = 2 pi R sum(delta_o + R - R_o) - 4 pi R^2, which is
+  // negative in normal use and reaches 0 under high confinement (Appendix C). D is kept at or below
+  // -denominator_floor * 4 pi R^2, i.e. the guard acts once the contributing apparent overlaps sum
+  // to more than 2 R (1 - denominator_floor). Each use is counted (MdrGrowthState::guard_hits).
+  double denominator_floor = 0.05;
+  // V of MDR (39) is kept at or above volume_floor * V_o (counted as well).
+  double volume_floor = 0.1;
+
+  void validate() const {
+    if (xi != 1 && xi != 3)
+      throw ParameterError("mdr: xi = " + std::to_string(xi) + " is outside the valid set {1, 3}");  // host
+    require_range("mdr: radius_cap", radius_cap, 1.0, Bound::closed, 10.0, Bound::closed);
+    require_range("mdr: denominator_floor", denominator_floor, 0.0, Bound::open, 1.0, Bound::open);
+    require_range("mdr: volume_floor", volume_floor, 0.0, Bound::open, 1.0, Bound::open);
+  }
+};
+
+// One particle's constants as a side of a contact (a particle against a rigid flat).
+template <class T>
+struct MdrSideConstants {
+  T E_eff;     // E/(1 - nu^2): the side's plane strain modulus against a rigid flat
+  T G;         // shear modulus, MDR (34)
+  T nu;        // Poisson ratio, MDR (34)
+  T kappa;     // bulk modulus, MDR (38)
+  T Y;         // yield stress, MDR (16) and (21); +inf: never yields
+  T x_yield;   // delta_Y / R, the root of the yield equation (41) (see MdrYieldOnset); +inf: never
+};
+
+// Constants of a material pair (particle-particle or particle-wall).
+template <class T>
+struct MdrPairConstants {
+  T E_star;      // composite modulus of the two bodies (rigid wall: E_eff of the particle); k_n
+  T kt_over_kn;  // 4 G*/E*: k_t = (4G*/E*) k_n = 8 G* a (Mindlin), Nan (22)
+  T c_damp;      // viscous coefficient from the restitution (exact Hertz relation)
+  T mu;          // Coulomb friction coefficient
+  T gamma;       // effective surface energy Delta gamma; 0 = no adhesion for this pair
+};
+
+// --- yield onset, host --------------------------------------------------------------------------
+
+
+// delta_Y / R for a side with plane strain modulus E_eff and yield stress Y: the root of the
+// yield equation, solved by bracketed_newton in s = sqrt(delta_Y / R). Depends on E_eff/Y only.
+// Returns +inf when the side never yields (Y infinite, or the elastic pressure never reaches p_Y
+// before the ellipse is fully submerged, which needs E_eff/Y below about 2).
+inline double mdr_yield_ratio(double E_eff, double Y, MdrYieldOnset onset) {
+  const double inf = std::numeric_limits<double>::infinity();
+  if (!std::isfinite(Y)) return inf;
+  const double r = E_eff / Y;
+  const double pi = constants<double>::pi;
+  // p_Y / Y = 1.75 exp(-4.4 x) + 1, MDR (16) with delta_o/R_o -> delta_max/R (21); x = s^2.
+  auto hardening = [](double s) { return 1.75 * std::exp(-4.4 * s * s) + 1.0; };
+  auto dhardening = [](double s) { return -1.75 * 8.8 * s * std::exp(-4.4 * s * s); };
+  RootResult<double> res{};
+  if (onset == MdrYieldOnset::hertz_40) {
+    // MDR (41) over Y: (4 r / (3 pi)) s - p_Y/Y = 0. Increasing in s; p_Y/Y in [1, 2.75], so the
+    // root lies in [3 pi/(4 r), 2.75 * 3 pi/(4 r)].
+    auto f = [&](double s, double& fv, double& df) {
+      fv = 4.0 * r / (3.0 * pi) * s - hardening(s);
+      df = 4.0 * r / (3.0 * pi) - dhardening(s);
+    };
+    res = bracketed_newton<double>(f, 3.0 * pi / (4.0 * r), 2.75 * 3.0 * pi / (4.0 * r), 1e-15, 200);
+  } else {
+    // Mean pressure of the ellipse law over Y: F_el / (pi x R^2 Y) with F_el = E A B/4 * bracket,
+    // A = 4R, B = 2R: (2 r / pi) bracket(theta) / s^2, theta = 2 asin(s/2). It is increasing in s
+    // on (0, 2] (s = 2: the ellipse is fully submerged) and tends to (4 r/(3 pi)) s as s -> 0.
+    auto f = [&](double s, double& fv, double& df) {
+      const double th = 2.0 * std::asin(0.5 * s);
+      const double br = mdr_ellipse_bracket(th);
+      const double dth = 1.0 / std::sqrt(std::max(1.0 - 0.25 * s * s, 1e-300));  // d theta / ds
+      const double dbr = 2.0 * std::sin(th) * std::sin(th) * dth;               // d bracket / ds
+      fv = 2.0 * r / pi * br / (s * s) - hardening(s);
+      df = 2.0 * r / pi * (dbr / (s * s) - 2.0 * br / (s * s * s)) - dhardening(s);
+    };
+    double fl, fh, d;
+    const double lo = 1e-12, hi = 2.0;
+    f(hi, fh, d);
+    if (fh < 0.0) return inf;  // never reaches the hardening curve (E_eff/Y below about 2)
+    f(lo, fl, d);
+    res = bracketed_newton<double>(f, lo, hi, 1e-15, 200);
+  }
+  if (!res.bracketed) return inf;
+  return res.x * res.x;
+}
+
+// Side constants of a (non-rigid) material, validated.
+template <class T>
+MdrSideConstants<T> mdr_side_constants(const Material& m, MdrYieldOnset onset) {
+  m.validate();
+  if (m.rigid)
+    throw ParameterError("mdr: material '" + m.name + "' is rigid; MDR particles must be deformable");  // host
+  const double nu = m.poisson_ratio;
+  const double E_eff = m.youngs_modulus / (1.0 - nu * nu);
+  MdrSideConstants<T> c;
+  c.E_eff = T(E_eff);
+  c.G = T(m.shear_modulus());
+  c.nu = T(nu);
+  c.kappa = T(m.youngs_modulus / (3.0 * (1.0 - 2.0 * nu)));
+  c.Y = T(m.yield_stress);
+  const double xy = mdr_yield_ratio(E_eff, m.yield_stress, onset);
+  c.x_yield = std::isfinite(xy) ? T(xy) : std::numeric_limits<T>::infinity();
+  return c;
+}
+
+// Pair constants of two materials (either may be a rigid wall material).
+template <class T>
+MdrPairConstants<T> mdr_pair_constants(const Material& a, const Material& b) {
+  const PairProperties pp = pair_properties(a, b);  // host: rejects two rigid bodies
+  MdrPairConstants<T> p;
+  p.E_star = T(pp.E_star);
+  p.kt_over_kn = T(4.0 * pp.G_star / pp.E_star);
+  p.c_damp = T(hertz_damping_coefficient(pp.restitution));
+  p.mu = T(pp.friction);
+  p.gamma = T(pp.surface_energy);
+  return p;
+}
+
+}  // namespace epac

@@ -1,0 +1,142 @@
+#pragma once
+// MDR apparent-radius growth, (37)-(39) and Appendix C: plastic deformation is incompressible, so
+// the particle's apparent radius R grows to keep its truncated-sphere volume equal to V_o plus the
+// elastic volume change. The force pass adds each side's terms to per-particle sums with
+// atomic_add (mdr_growth_add_side); a per-particle kernel then applies them and resets the sums
+// (mdr_update_radii, design.md section 4 step 4).
+//
+// Per side (particle p, side force F along the normal into p, apparent overlap delta, delta_o =
+// delta - (R - R_o)):
+//   Christoffersen term, (38): eps_c = (f . b) / (3 kappa V) = -F (R - delta) / (3 kappa V), with b
+//   the branch vector from the centre to the contact, of length R - delta (notes: not "delta_o");
+//   volume sum: eps_sum += eps_c, and V = V_o (1 + eps_sum) (39);
+//   growth sums (37), for contributing sides:
+//     numerator   += -V_o (eps_c - eps_c,prev)     [plastic_loading rule: Delta V^e per side]
+//                    - pi d(delta_o) (2 delta_o R_o - delta_o^2 + R^2 - R_o^2)
+//     denominator += 2 pi R (delta_o + R - R_o)
+//   plastic_loading rule (default, authors' code): sides in plastic loading (yielded, delta at
+//   delta_max, F > 0); all_contacts rule (paper): every side with delta > 0, and Delta V^e =
+//   -(V_new - V_old) of the whole particle, added in the update kernel.
+// Update: dR = max(numerator / D, 0), D = denominator - 4 pi R^2, with the guards of MdrOptions
+// (D <= -denominator_floor 4 pi R^2; R <= radius_cap R_o; V >= volume_floor V_o), each counted.
+#include <epac/core/kokkos_compat.hpp>
+#include <epac/models/mdr/mdr_parameters.hpp>
+
+#include <string>
+
+namespace epac {
+
+// Indices into MdrGrowthState::guard_hits.
+enum MdrGrowthGuard : int {
+  kMdrGuardDenominator = 0,  // D of (37) floored
+  kMdrGuardRadiusCap = 1,    // R reached radius_cap R_o
+  kMdrGuardVolume = 2,       // V of (39) floored
+  kMdrGuardCount = 3
+};
+
+template <class T, class Device>
+struct MdrGrowthState {
+  Kokkos::View<T*, Device> radius0;  // R_o (the particles' view)
+  Kokkos::View<T*, Device> radius;   // R (the particles' view; updated here)
+  Kokkos::View<T*, Device> volume;   // V, MDR (39)
+  Kokkos::View<T*, Device> eps_sum;  // sum of the particle's Christoffersen terms (38)
+  Kokkos::View<T*, Device> numerator, denominator;  // sums of (37)
+  Kokkos::View<int*, Device> guard_hits;  // cumulative counts, MdrGrowthGuard
+  MdrGrowthRule rule = MdrGrowthRule::plastic_loading;
+  T radius_cap = T(1.5), denominator_floor = T(0.05), volume_floor = T(0.1);
+
+  bool bound() const { return volume.extent(0) > 0; }
+
+  // Host: attaches the particle radii and allocates V (= V_o) and the sums (zero).
+  void attach(const Kokkos::View<T*, Device>& r0, const Kokkos::View<T*, Device>& r,
+              const std::string& label = "mdr") {  // host
+    radius0 = r0;
+    radius = r;
+    const int n = static_cast<int>(r0.extent(0));
+    volume = Kokkos::View<T*, Device>(label + ".volume", n);
+    eps_sum = Kokkos::View<T*, Device>(label + ".eps_sum", n);
+    numerator = Kokkos::View<T*, Device>(label + ".dR_numerator", n);
+    denominator = Kokkos::View<T*, Device>(label + ".dR_denominator", n);
+    guard_hits = Kokkos::View<int*, Device>(label + ".guard_hits", kMdrGuardCount);
+    auto V = volume;
+    auto R0 = radius0;
+    Kokkos::parallel_for("epac::mdr_init_volume",
+                         Kokkos::RangePolicy<typename Device::execution_space>(0, n),
+                         KOKKOS_LAMBDA(int p) {
+                           V(p) = T(4) / T(3) * constants<T>::pi * R0(p) * R0(p) * R0(p);
+                         });
+  }
+};
+
+// Force pass, one side of a contact on particle p. F: the side's MDR force (no damping);
+// delta: its apparent overlap; R: the particle's current radius; plastic_loading: yielded, delta at
+// its running maximum and F > 0. Updates the side's history (delta_o_prev, eps_prev).
+template <class T, class Device>
+KOKKOS_INLINE_FUNCTION void mdr_growth_add_side(const MdrGrowthState<T, Device>& gs, int p, T kappa, T F,
+                                                T delta, T R, bool plastic_loading, T& delta_o_prev,
+                                                T& eps_prev) {
+  const T pi = constants<T>::pi;
+  const T R0 = gs.radius0(p);
+  const T V = gs.volume(p);  // >= volume_floor V_o > 0 (update kernel guard)
+  const T b = math::max(R - delta, T(0));  // branch length; >= 0 past the centre (guard)
+  const T eps = -F * b / (T(3) * kappa * V);
+  Kokkos::atomic_add(&gs.eps_sum(p), eps);
+  const T delta_o = delta - (R - R0);
+  const T ddo = delta_o - delta_o_prev;
+  const bool contributes =
+      gs.rule == MdrGrowthRule::plastic_loading ? plastic_loading : (delta > T(0));
+  if (contributes) {
+    T num = -pi * ddo * (T(2) * delta_o * R0 - delta_o * delta_o + R * R - R0 * R0);
+    if (gs.rule == MdrGrowthRule::plastic_loading) {
+      const T V0 = T(4) / T(3) * pi * R0 * R0 * R0;
+      num -= V0 * (eps - eps_prev);
+    }
+    Kokkos::atomic_add(&gs.numerator(p), num);
+    Kokkos::atomic_add(&gs.denominator(p), T(2) * pi * R * (delta_o + R - R0));
+  }
+  delta_o_prev = delta_o;
+  eps_prev = eps;
+}
+
+// Per-particle kernel: applies (37) and (39), resets the sums. R never decreases.
+template <class T, class Device>
+void mdr_update_radii(const MdrGrowthState<T, Device>& gs) {
+  const int n = static_cast<int>(gs.volume.extent(0));
+  const MdrGrowthState<T, Device> s = gs;
+  Kokkos::parallel_for(
+      "epac::mdr_update_radii", Kokkos::RangePolicy<typename Device::execution_space>(0, n),
+      KOKKOS_LAMBDA(int p) {
+        const T pi = constants<T>::pi;
+        const T R = s.radius(p), R0 = s.radius0(p);
+        const T V0 = T(4) / T(3) * pi * R0 * R0 * R0;
+        T factor = T(1) + s.eps_sum(p);  // (39)
+        if (factor < s.volume_floor) {
+          factor = s.volume_floor;
+          Kokkos::atomic_add(&s.guard_hits(kMdrGuardVolume), 1);
+        }
+        const T V_new = V0 * factor;
+        T num = s.numerator(p);
+        if (s.rule == MdrGrowthRule::all_contacts) num -= V_new - s.volume(p);  // Delta V^e
+        // (37). D < 0 in normal use; near 0 under high confinement (Appendix C): floored.
+        T D = s.denominator(p) - T(4) * pi * R * R;
+        const T D_max = -s.denominator_floor * T(4) * pi * R * R;
+        if (D > D_max) {
+          Kokkos::atomic_add(&s.guard_hits(kMdrGuardDenominator), 1);
+          D = D_max;
+        }
+        const T dR = math::max(num / D, T(0));
+        T R_new = R + dR;
+        const T R_cap = s.radius_cap * R0;
+        if (R_new > R_cap) {
+          R_new = math::max(R, R_cap);
+          Kokkos::atomic_add(&s.guard_hits(kMdrGuardRadiusCap), 1);
+        }
+        s.radius(p) = R_new;
+        s.volume(p) = V_new;
+        s.eps_sum(p) = T(0);
+        s.numerator(p) = T(0);
+        s.denominator(p) = T(0);
+      });
+}
+
+}  // namespace epac

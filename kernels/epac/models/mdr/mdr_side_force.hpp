@@ -1,0 +1,153 @@
+#pragma once
+// The MDR normal force of one contact side: a particle of apparent radius R against a rigid flat
+// at apparent overlap delta (Part I, Sections 5-7 and Appendix E). Particle pairs evaluate two
+// sides (mdr_pair_split.hpp); walls one.
+//
+// Regimes:
+// - elastic: the ellipse A = 4R, B = 2R (31) at depth delta_1D^e = delta; force (30);
+// - switch (5.6.5): on loading, once delta/R exceeds x_yield = delta_Y/R (the root of the yield
+//   equation, mdr_parameters.hpp), the side is fully plastic for good; c_A (43) from delta_Y, the
+//   force of that step from the current delta (notes: "delta = delta_Y" means c_A only);
+// - fully plastic: a_max (36), A, B (28), p_Y (16)+(21), delta_R (34), delta_1D^e (35); force (30);
+//   unloading and reloading below delta_max run on the fixed ellipse of delta_max, so they retrace.
+#include <epac/models/mdr/mdr_adhesion.hpp>
+#include <epac/models/mdr/mdr_ellipse.hpp>
+#include <epac/models/mdr/mdr_parameters.hpp>
+
+namespace epac {
+
+// Lower bound of r = 1 + delta_R / delta_1D,max^e, the factor of (35). r -> 0 as z_R -> 0
+// (delta_max -> R + A/2: delta_R/(A/2) -> -(1-nu) E_eff/(2G) = -1), where (35) would divide by 0
+// and the unloading stiffness 1/r diverge; the authors' code aborts there on NaN. r stays above
+// 0.09 for delta_max/R <= 0.75 and any E/Y >= 6.25, so the floor acts only beyond delta_max ~ 0.95 R.
+template <class T>
+KOKKOS_INLINE_FUNCTION constexpr T mdr_min_recovery_ratio() { return T(0.01); }
+
+// Per-side history (fields present only for enabled effects; see mdr_model.hpp).
+template <class T>
+struct MdrSideState {
+  T delta_o_max = 0;   // running maximum of delta_o = delta - (R - R_o); delta_max by (19)
+  T yielded = 0;       // 0 elastic, 1 fully plastic
+  T c_A = 0;           // area intercept (43)
+  T delta_p = 0;       // residual (plastic) overlap: delta where delta_1D^e = 0
+  T a_adh = 0;         // adhesive contact radius (Section 6)
+  T delta_o_prev = 0;  // delta_o at the last step (radius growth, (37))
+  T eps_prev = 0;      // this side's Christoffersen term at the last step ((37)-(38))
+};
+
+// The ellipse of the fully-plastic regime at (delta_max, R, c_A).
+template <class T>
+struct MdrPlasticShape {
+  T A, B;       // (28)
+  T a_max;      // (36)
+  T p_Y;        // (16) with delta_max/R (21)
+  T ratio;      // r = 1 + delta_R/(A/2), floored (mdr_min_recovery_ratio)
+  T delta_p;    // residual overlap delta_max - (A/2) r = delta_max - (A/2 + delta_R)
+  bool ratio_floored;
+};
+
+template <class T>
+KOKKOS_INLINE_FUNCTION MdrPlasticShape<T> mdr_plastic_shape(const MdrSideConstants<T>& c, T delta_max,
+                                                            T R, T c_A) {
+  MdrPlasticShape<T> s;
+  const T pi = constants<T>::pi;
+  s.p_Y = c.Y * (T(1.75) * math::exp(T(-4.4) * delta_max / R) + T(1));
+  // (36). Domain: the radicand is >= delta_Y R > 0 for delta_Y <= delta_max <= R. Past the equator
+  // (delta_max > R) the cap radius of the truncated sphere would shrink; the equator value is kept.
+  const T xm = math::min(delta_max, R);
+  const T a2 = math::max(T(2) * xm * R - xm * xm + c_A / pi, T(1e-12) * R * R);
+  s.a_max = math::sqrt(a2);
+  s.A = T(4) * s.p_Y / c.E_eff * s.a_max;
+  s.B = T(2) * s.a_max;
+  const T half = T(0.5) * s.A;  // delta_1D,max^e
+  // (33): depth of the particle centre below the undeformed half-space surface; >= 0 (guard).
+  const T zR = math::max(R - (delta_max - half), T(0));
+  // (34) with F_max/(pi a_max^2) = p_Y exactly (F_max = E A B pi/8, (32) at depth A/2).
+  // sqrt(a^2 + z^2) >= a_max > 0; sqrt(a^2+z^2) - z = a^2/(sqrt(a^2+z^2) + z) avoids cancellation.
+  const T rho = math::sqrt(a2 + zR * zR);
+  const T gap = a2 / (rho + zR);
+  const T delta_R = s.p_Y * (T(2) * a2 * (c.nu - T(1)) - zR * (T(2) * c.nu - T(1)) * gap) /
+                    (T(2) * c.G * rho);
+  const T r = T(1) + delta_R / half;  // half > 0 since p_Y, a_max > 0
+  s.ratio_floored = r < mdr_min_recovery_ratio<T>();
+  s.ratio = s.ratio_floored ? mdr_min_recovery_ratio<T>() : r;
+  s.delta_p = delta_max - half * s.ratio;
+  return s;
+}
+
+// What one side evaluation produces.
+template <class T>
+struct MdrSideResult {
+  T F = 0;           // MDR force, positive = compressive
+  T A = 0, B = 0;    // current ellipse
+  T d1De = 0;        // transformed elastic displacement delta_1D^e
+  T a = 0;           // contact half-width in MDR space (adhesive a when stretched)
+  T delta_max = 0;   // (19)
+  T area = 0;        // contact area (42) with c_A, >= 0
+  bool plastic = false;
+  bool loading = false;         // delta_o >= the previous delta_o,max (plastic loading test)
+  bool ratio_floored = false;   // guard of (35) active
+  int adhesion_state = 0;       // MdrAdhesionState, 0 without adhesion
+};
+
+// Evaluates one side and advances its state s (the caller writes s back, or not, e.g. for
+// outputs). gamma: the pair's Delta gamma (0: no adhesion); xi of (15); growth = R - R_o (0
+// without radius growth).
+//
+// delta_max follows the paper's (19), delta_max = delta_o,max + R - R_o, with delta_o,max the
+// running maximum of delta_o = delta - (R - R_o), rather than the running maximum of delta
+// (Appendix E, the authors' code). The two differ by the last step's growth of R; on the stiff
+// unloading branch that one-increment lag made the curve depend on the step (0.75% change on
+// halving a 2e-4 R_o step at E/Y = 50); with (19), delta - delta_max = delta_o - delta_o,max does
+// not see the lag. Without growth the two definitions coincide.
+template <bool Plasticity, bool Adhesion, class T>
+KOKKOS_INLINE_FUNCTION MdrSideResult<T> mdr_side_force(const MdrSideConstants<T>& c, T gamma, T xi,
+                                                       T delta, T R, T growth, MdrSideState<T>& s) {
+  MdrSideResult<T> out;
+  const T pi = constants<T>::pi;
+  const T delta_o = delta - growth;
+  out.loading = delta_o >= s.delta_o_max;
+  if (Plasticity) {
+    if (out.loading) s.delta_o_max = delta_o;
+    // Sharp switch (5.6.5), tested on loading only: unloading lowers the elastic pressure while
+    // p_Y(delta_max) stays. x_yield = +inf: never yields.
+    if (s.yielded == T(0) && out.loading && delta > c.x_yield * R) {
+      const T dY = c.x_yield * R;
+      s.yielded = T(1);
+      s.c_A = pi * (dY * dY - dY * R);  // (43)
+    }
+  }
+  const T delta_max = s.delta_o_max + growth;  // (19)
+  out.delta_max = delta_max;
+  if (Plasticity && s.yielded != T(0)) {
+    const MdrPlasticShape<T> sh = mdr_plastic_shape(c, delta_max, R, s.c_A);
+    out.plastic = true;
+    out.A = sh.A;
+    out.B = sh.B;
+    // (35) rewritten as A/2 + (delta - delta_max)/r: the same value, without 0/0 at r -> 0.
+    out.d1De = T(0.5) * sh.A + (delta - delta_max) / sh.ratio;
+    out.ratio_floored = sh.ratio_floored;
+    s.delta_p = sh.delta_p;
+    // (42), plastic branch, with the current delta
+    out.area = math::max(pi * (T(2) * delta * R - delta * delta) + s.c_A, T(0));
+  } else {
+    out.A = T(4) * R;
+    out.B = T(2) * R;
+    out.d1De = delta;
+    out.area = math::max(pi * delta * R, T(0));  // (42), elastic branch
+  }
+  if (Adhesion && gamma > T(0)) {
+    const MdrAdhesiveForce<T> af = mdr_adhesive_force(c.E_eff, gamma, xi, out.A, out.B, out.d1De, s.a_adh);
+    out.F = af.F;
+    out.a = af.a;
+    out.adhesion_state = af.state;
+    s.a_adh = af.a;
+  } else {
+    out.F = mdr_ellipse_force(c.E_eff, out.A, out.B, out.d1De);
+    out.a = mdr_ellipse_contact_radius(out.A, out.B, out.d1De);
+    if (Adhesion) s.a_adh = T(0);
+  }
+  return out;
+}
+
+}  // namespace epac
