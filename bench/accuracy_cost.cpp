@@ -12,6 +12,7 @@
 #include <epac/compute/contact_forces.hpp>
 #include <epac/models/hertz_mindlin.hpp>
 #include <epac/models/jkr/jkr.hpp>
+#include <epac/models/mdr/mdr_model.hpp>
 #include <epac/models/nan2022/nan2022.hpp>
 #include <support/dense_packing.hpp>
 #include <support/wall_impact.hpp>
@@ -87,6 +88,9 @@ constexpr unsigned FD = kFriction | kDamping;
 template <class T> struct MakeHertzMindlin { static auto make() { return HertzMindlin<T, Effects<FD>>::create({particle(), wall()}); } };
 template <class T> struct MakeJkr { static auto make() { return Jkr<T, Effects<FD | kAdhesion>>::create({particle(), wall()}); } };
 template <class T> struct MakeNan { static auto make() { return Nan2022<T, Effects<FD | kAdhesion | kPlasticity>>::create({particle(), wall()}); } };
+template <class T> struct MakeMdr {  // radius growth off: a single impact does not grow R measurably
+  static auto make() { return Mdr<T, Effects<FD | kAdhesion | kPlasticity>>::create({particle(), wall()}); }
+};
 }  // namespace
 
 int main(int argc, char* argv[]) {
@@ -98,6 +102,7 @@ int main(int argc, char* argv[]) {
   evaluate<MakeHertzMindlin>("hertz_mindlin", rows);
   evaluate<MakeJkr>("hertz_jkr", rows);
   evaluate<MakeNan>("nan2022", rows);
+  evaluate<MakeMdr>("mdr", rows);
   std::printf("backend %s, %d threads; impact at %.1f m/s; errors against the same law in double at t_c/2000\n\n",
               Kokkos::DefaultExecutionSpace::name(), Kokkos::DefaultExecutionSpace().concurrency(), kV0);
   std::printf("| model | precision | dt = t_c/N | restitution | abs. error e | rel. error F_max | ns per contact per pass | ns per contact per t_c simulated |\n");

@@ -1,12 +1,14 @@
 // Cost of each contact law in one run (ratios are what to read: the machine is shared):
 // contact-steps per second of one force pass on the same dense packing (about 6 contacts per
-// particle, 1.0e5 and 1.0e6 contacts), for Hertz-Mindlin, Hertz-JKR and Nan et al. 2022, with all
-// their effects and with adhesion or plasticity compiled out. Friction and damping are on
-// everywhere. The packing's overlaps (about 0.1 R) put every Nan contact past yield.
+// particle, 1.0e5 and 1.0e6 contacts), for Hertz-Mindlin, Hertz-JKR, Nan et al. 2022 and MDR,
+// with all their effects and with adhesion, plasticity or radius growth compiled out. Friction
+// and damping are on everywhere. The packing's overlaps (about 0.1 R) put every Nan and MDR
+// contact past yield. MDR with radius growth includes its per-particle update kernel.
 #include <benchmark/benchmark.h>
 #include <epac/compute/contact_forces.hpp>
 #include <epac/models/hertz_mindlin.hpp>
 #include <epac/models/jkr/jkr.hpp>
+#include <epac/models/mdr/mdr_model.hpp>
 #include <epac/models/nan2022/nan2022.hpp>
 #include <support/dense_packing.hpp>
 
@@ -23,14 +25,17 @@ Material powder() {
 Material powder_no_adhesion() { Material m = powder(); m.surface_energy = 0; return m; }
 
 template <class Model>
-void run(benchmark::State& state, const Model& model) {
+void run(benchmark::State& state, Model model) {
   using T = typename Model::scalar_type;
   using D = typename Model::device_type;
   auto pk = bench::make_dense_packing<T, D>(static_cast<int>(state.range(0)));
   ContactHistory<T, D> h(pk.contacts.count, Model::history_size);
+  constexpr bool grows = Model::effects::radius_growth;
+  if constexpr (grows) model.bind(pk.particles);
   for (auto _ : state) {
     zero_forces(pk.particles);
     compute_pair_forces(model, pk.particles, pk.contacts, h, T(1e-9));
+    if constexpr (grows) model.update_radii();
     Kokkos::fence();
   }
   state.SetItemsProcessed(state.iterations() * pk.contacts.count);
@@ -50,6 +55,15 @@ template <class T> void BM_Nan2022_NoAdhesion(benchmark::State& s) {
   run(s, Nan2022<T, Effects<FD | kPlasticity>>::create({powder_no_adhesion()}));
 }
 
+constexpr unsigned ALL = FD | kAdhesion | kPlasticity | kRadiusGrowth;
+template <class T> void BM_Mdr(benchmark::State& s) { run(s, Mdr<T, Effects<ALL>>::create({powder()})); }
+template <class T> void BM_Mdr_NoGrowth(benchmark::State& s) {
+  run(s, Mdr<T, Effects<ALL & ~kRadiusGrowth>>::create({powder()}));
+}
+template <class T> void BM_Mdr_NoAdhesionNoGrowth(benchmark::State& s) {
+  run(s, Mdr<T, Effects<FD | kPlasticity>>::create({powder_no_adhesion()}));
+}
+
 void sizes(benchmark::internal::Benchmark* b) {
   for (int n : {33, 70}) b->Arg(n);
   b->Unit(benchmark::kMillisecond)->UseRealTime();
@@ -60,6 +74,10 @@ BENCHMARK_TEMPLATE(BM_HertzMindlin, double)->Apply(sizes);
 BENCHMARK_TEMPLATE(BM_HertzJKR, double)->Apply(sizes);
 BENCHMARK_TEMPLATE(BM_Nan2022, double)->Apply(sizes);
 BENCHMARK_TEMPLATE(BM_Nan2022_NoAdhesion, double)->Apply(sizes);
+BENCHMARK_TEMPLATE(BM_Mdr, double)->Apply(sizes);
+BENCHMARK_TEMPLATE(BM_Mdr_NoGrowth, double)->Apply(sizes);
+BENCHMARK_TEMPLATE(BM_Mdr_NoAdhesionNoGrowth, double)->Apply(sizes);
 BENCHMARK_TEMPLATE(BM_HertzMindlin, float)->Apply(sizes);
 BENCHMARK_TEMPLATE(BM_HertzJKR, float)->Apply(sizes);
 BENCHMARK_TEMPLATE(BM_Nan2022, float)->Apply(sizes);
+BENCHMARK_TEMPLATE(BM_Mdr, float)->Apply(sizes);
