@@ -1,0 +1,243 @@
+#pragma once
+// Contact detection on the device with a skin (Verlet-list style), and the history remap that
+// follows each rebuild (design.md section 4, steps 1-2).
+//  - pairs (i < j) with |x_i - x_j| < R_i + R_j + skin, from the cell list;
+//  - particle-wall contacts with signed distance to the plane < R_i + skin.
+// Lists come out ordered by i (then by cell, then by j; walls by wall index), the same on every
+// backend. Entries with negative overlap are kept: the model reports them inactive.
+//
+// Rebuild rule: a contact missing from the list needs d_i + g_i + d_j + g_j > skin (pairs) or
+// d_i + g_i + d_w > skin (walls), with d the displacement and g the radius growth since the last
+// build, d_w a wall's displacement along its normal. So the lists stay complete while
+// max_i (d_i + g_i) <= skin/2 and max_w d_w <= skin/2; ContactDetector::update rebuilds when
+// either exceeds it. Growing radii (MDR) thus eat into the same margin.
+#include "driver/cell_list.hpp"
+
+#include <epac/compute/history_remap.hpp>
+#include <epac/state/contact_history.hpp>
+#include <epac/state/contact_list.hpp>
+#include <epac/state/particles.hpp>
+#include <epac/state/walls.hpp>
+
+namespace epac {
+namespace driver {
+
+namespace detail {
+// Returns a list with room for `count` entries: `old` if large enough, else a new one with 25%
+// headroom (so a slowly growing contact count does not reallocate at every rebuild).
+template <class Device>
+ContactList<Device> list_with_room(const ContactList<Device>& old, int count, const char* label) {
+  ContactList<Device> l = old;
+  if (old.capacity() < count) l = ContactList<Device>(count + count / 4 + 16, label);
+  l.count = count;
+  return l;
+}
+}  // namespace detail
+
+// Pairs i < j within R_i + R_j + skin. `reuse` donates its storage if large enough.
+template <class T, class Device>
+ContactList<Device> find_pairs(const Particles<T, Device>& p, const CellList<T, Device>& cells, T skin,
+                               const ContactList<Device>& reuse = {}) {
+  using exec = typename Device::execution_space;
+  const int n = p.n;
+  auto x = p.x;
+  auto r = p.radius;
+  Kokkos::View<int*, Device> offset("epac::driver::pair_offset", n + 1);
+  Kokkos::parallel_for("epac::driver::pair_count", Kokkos::RangePolicy<exec>(0, n), KOKKOS_LAMBDA(int i) {
+    const Vec3<T> xi = load3(x, i);
+    const T ri = r(i);
+    int c = 0;
+    cells.for_each_near(xi, [&](int j) {
+      if (j <= i) return;
+      const Vec3<T> d = xi - load3(x, j);
+      const T cut = ri + r(j) + skin;
+      if (dot(d, d) < cut * cut) ++c;
+    });
+    offset(i) = c;
+  });
+  int total = 0;
+  Kokkos::parallel_scan(
+      Kokkos::RangePolicy<exec>(0, n + 1),
+      KOKKOS_LAMBDA(int i, int& upd, bool final) {
+        const int k = i < n ? offset(i) : 0;
+        if (final) offset(i) = upd;
+        upd += k;
+      },
+      total);
+  ContactList<Device> list = detail::list_with_room(reuse, total, "pairs");
+  auto first = list.first;
+  auto second = list.second;
+  Kokkos::parallel_for("epac::driver::pair_fill", Kokkos::RangePolicy<exec>(0, n), KOKKOS_LAMBDA(int i) {
+    const Vec3<T> xi = load3(x, i);
+    const T ri = r(i);
+    int k = offset(i);
+    cells.for_each_near(xi, [&](int j) {
+      if (j <= i) return;
+      const Vec3<T> d = xi - load3(x, j);
+      const T cut = ri + r(j) + skin;
+      if (dot(d, d) < cut * cut) {
+        first(k) = i;
+        second(k) = j;
+        ++k;
+      }
+    });
+  });
+  return list;
+}
+
+// Particle-wall contacts: signed distance from the plane < R_i + skin (particles behind a wall
+// count too: they overlap it by more than their radius).
+template <class T, class Device>
+ContactList<Device> find_wall_contacts(const Particles<T, Device>& p, const Walls<T, Device>& w, T skin,
+                                       const ContactList<Device>& reuse = {}) {
+  using exec = typename Device::execution_space;
+  const int n = p.n, nw = w.n;
+  auto x = p.x;
+  auto r = p.radius;
+  auto wp = w.point;
+  auto wn = w.normal;
+  Kokkos::View<int*, Device> offset("epac::driver::wall_offset", n + 1);
+  if (nw > 0) {
+    Kokkos::parallel_for("epac::driver::wall_count", Kokkos::RangePolicy<exec>(0, n), KOKKOS_LAMBDA(int i) {
+      const Vec3<T> xi = load3(x, i);
+      int c = 0;
+      for (int k = 0; k < nw; ++k)
+        if (dot(xi - load3(wp, k), load3(wn, k)) < r(i) + skin) ++c;
+      offset(i) = c;
+    });
+  }
+  int total = 0;
+  Kokkos::parallel_scan(
+      Kokkos::RangePolicy<exec>(0, n + 1),
+      KOKKOS_LAMBDA(int i, int& upd, bool final) {
+        const int k = i < n ? offset(i) : 0;
+        if (final) offset(i) = upd;
+        upd += k;
+      },
+      total);
+  ContactList<Device> list = detail::list_with_room(reuse, total, "wall_contacts");
+  auto first = list.first;
+  auto second = list.second;
+  if (nw > 0 && total > 0) {
+    Kokkos::parallel_for("epac::driver::wall_fill", Kokkos::RangePolicy<exec>(0, n), KOKKOS_LAMBDA(int i) {
+      const Vec3<T> xi = load3(x, i);
+      int c = offset(i);
+      for (int k = 0; k < nw; ++k)
+        if (dot(xi - load3(wp, k), load3(wn, k)) < r(i) + skin) {
+          first(c) = i;
+          second(c) = k;
+          ++c;
+        }
+    });
+  }
+  return list;
+}
+
+// Owns the contact lists and their histories; rebuilds and remaps when the skin is used up.
+template <class T, class Device>
+class ContactDetector {
+ public:
+  using vec_view = Kokkos::View<T* [3], Kokkos::LayoutLeft, Device>;
+
+  ContactList<Device> pairs, walls;
+  ContactHistory<T, Device> pair_history, wall_history;
+  std::int64_t builds = 0;
+
+  ContactDetector() = default;
+  ContactDetector(T skin, int pair_fields, int wall_fields)
+      : skin_(skin), pair_fields_(pair_fields), wall_fields_(wall_fields) {}
+
+  T skin() const { return skin_; }
+
+  // Detects both lists from scratch and carries the history of persisting contacts over.
+  void build(const Particles<T, Device>& p, const Walls<T, Device>& w) {
+    T rmax = T(0);
+    auto r = p.radius;
+    Kokkos::parallel_reduce(
+        "epac::driver::max_radius", Kokkos::RangePolicy<exec>(0, p.n),
+        KOKKOS_LAMBDA(int i, T& m) { if (r(i) > m) m = r(i); }, Kokkos::Max<T>(rmax));
+    const CellList<T, Device> cells = build_cell_list(p, T(2) * rmax + skin_);
+    pairs = find_pairs(p, cells, skin_, pairs);
+    walls = find_wall_contacts(p, w, skin_, walls);
+    pair_history = remap_history(pair_history, pair_contact_keys(p, pairs), pair_fields_);
+    wall_history = remap_history(wall_history, wall_contact_keys(p, walls), wall_fields_);
+    // Reference state for the rebuild rule.
+    if (static_cast<int>(x_build_.extent(0)) != p.n) {
+      x_build_ = vec_view("epac::driver::x_build", p.n);
+      r_build_ = Kokkos::View<T*, Device>("epac::driver::r_build", p.n);
+    }
+    if (static_cast<int>(wall_build_.extent(0)) != w.n) wall_build_ = vec_view("epac::driver::wall_build", w.n);
+    Kokkos::deep_copy(x_build_, p.x);
+    Kokkos::deep_copy(r_build_, p.radius);
+    Kokkos::deep_copy(wall_build_, w.point);
+    ++builds;
+  }
+
+  // max_i (|x_i - x_i,build| + max(0, R_i - R_i,build)).
+  T particle_shift(const Particles<T, Device>& p) const {
+    T m = T(0);
+    auto x = p.x;
+    auto r = p.radius;
+    auto xb = x_build_;
+    auto rb = r_build_;
+    Kokkos::parallel_reduce(
+        "epac::driver::particle_shift", Kokkos::RangePolicy<exec>(0, p.n),
+        KOKKOS_LAMBDA(int i, T& v) {
+          const T grow = r(i) - rb(i);
+          const T s = norm(load3(x, i) - load3(xb, i)) + (grow > T(0) ? grow : T(0));
+          // NaN (a diverged particle) forces a rebuild, whose bounding box check reports it.
+          if (!(s == s)) v = T(1e30);
+          else if (s > v) v = s;
+        },
+        Kokkos::Max<T>(m));
+    return m;
+  }
+
+  // max_w |(point_w - point_w,build) . normal_w|: only motion along the normal changes distances.
+  T wall_shift(const Walls<T, Device>& w) const {
+    if (w.n == 0) return T(0);
+    T m = T(0);
+    auto pt = w.point;
+    auto nr = w.normal;
+    auto pb = wall_build_;
+    Kokkos::parallel_reduce(
+        "epac::driver::wall_shift", Kokkos::RangePolicy<exec>(0, w.n),
+        KOKKOS_LAMBDA(int k, T& v) {
+          const T s = math::fabs(dot(load3(pt, k) - load3(pb, k), load3(nr, k)));
+          if (s > v) v = s;
+        },
+        Kokkos::Max<T>(m));
+    return m;
+  }
+
+  bool needs_rebuild(const Particles<T, Device>& p, const Walls<T, Device>& w) const {
+    if (builds == 0) return true;
+    const T half = T(0.5) * skin_;
+    return particle_shift(p) > half || wall_shift(w) > half;
+  }
+  // The same rule from shifts measured elsewhere (the driver's fused integration kernel).
+  bool needs_rebuild(T particle_shift_value, T wall_shift_value) const {
+    const T half = T(0.5) * skin_;
+    return builds == 0 || particle_shift_value > half || wall_shift_value > half;
+  }
+  // Positions and radii at the last build (the reference of particle_shift).
+  const vec_view& reference_positions() const { return x_build_; }
+  const Kokkos::View<T*, Device>& reference_radii() const { return r_build_; }
+
+  // Rebuilds if needed; returns whether it did.
+  bool update(const Particles<T, Device>& p, const Walls<T, Device>& w) {
+    if (!needs_rebuild(p, w)) return false;
+    build(p, w);
+    return true;
+  }
+
+ private:
+  using exec = typename Device::execution_space;
+  T skin_ = T(0);
+  int pair_fields_ = 0, wall_fields_ = 0;
+  vec_view x_build_, wall_build_;
+  Kokkos::View<T*, Device> r_build_;
+};
+
+}  // namespace driver
+}  // namespace epac

@@ -1,0 +1,93 @@
+#include "driver/outputs.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <filesystem>
+#include <iomanip>
+#include <stdexcept>
+
+namespace epac {
+namespace driver {
+
+void make_output_dir(const std::string& dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec || !std::filesystem::is_directory(dir))
+    throw std::runtime_error("cannot create the output folder '" + dir + "': " + ec.message());
+}
+
+TimeseriesWriter::TimeseriesWriter(const std::string& path, const std::vector<std::string>& walls, bool driven)
+    : out_(path), driven_(driven) {
+  if (!out_) throw std::runtime_error("cannot write '" + path + "'");
+  out_ << "step,time,ke_translational,ke_rotational,pe_gravity,pair_contacts,wall_contacts,pair_list,wall_list,"
+          "max_overlap_ratio";
+  for (const auto& w : walls) out_ << ",force_" << w << ",displacement_" << w;
+  if (driven_) out_ << ",driven_fx,driven_fy,driven_fz";
+  out_ << '\n' << std::setprecision(10);
+}
+
+void TimeseriesWriter::write(const Sample& s) {
+  out_ << s.step << ',' << s.time << ',' << s.ke_translational << ',' << s.ke_rotational << ',' << s.pe_gravity << ','
+       << s.pair_contacts << ',' << s.wall_contacts << ',' << s.pair_list << ',' << s.wall_list << ','
+       << s.max_overlap_ratio;
+  for (std::size_t k = 0; k < s.wall_force.size(); ++k) out_ << ',' << s.wall_force[k] << ',' << s.wall_displacement[k];
+  if (driven_) out_ << ',' << s.driven_force[0] << ',' << s.driven_force[1] << ',' << s.driven_force[2];
+  out_ << '\n';
+}
+
+void write_summary_json(const std::string& path, const RunSummary& s) {
+  nlohmann::json j;
+  j["scene"] = s.scene;
+  j["particles"] = s.particles;
+  j["walls"] = s.walls;
+  j["steps"] = s.steps;
+  j["dt"] = s.dt;
+  j["simulated_time"] = s.simulated_time;
+  j["contacts_mean"] = s.contacts_mean;
+  j["contact_list_mean"] = s.contact_list_mean;
+  j["rebuilds"] = s.rebuilds;
+  j["wall_time_s"] = s.wall_time_s;
+  j["setup_time_s"] = s.setup_time_s;
+  j["contact_steps_per_second"] = s.contact_steps_per_second;
+  j["active_contact_steps_per_second"] = s.active_contact_steps_per_second;
+  j["backend"] = s.backend;
+  j["threads"] = s.threads;
+  j["scalar"] = s.scalar;
+  j["model"] = s.model;
+  j["effects"] = s.effects;
+  j["history_fields"] = s.history_fields;
+  j["bytes_per_contact"] = s.bytes_per_contact;
+  std::ofstream out(path);
+  if (!out) throw std::runtime_error("cannot write '" + path + "'");
+  out << j.dump(2) << '\n';
+}
+
+ProgressLine::ProgressLine(bool enabled, std::int64_t total)
+    : enabled_(enabled), total_(total), start_(clock::now()), last_(start_) {}
+
+void ProgressLine::update(std::int64_t step, double contact_steps) {
+  if (!enabled_) return;
+  const auto now = clock::now();
+  if (now - last_ < std::chrono::milliseconds(250) && step < total_) return;
+  last_ = now;
+  const double t = std::chrono::duration<double>(now - start_).count();
+  if (t <= 0) return;
+  const double rate = step / t;
+  const double eta = rate > 0 ? (total_ - step) / rate : 0.0;
+  std::printf("\rstep %lld/%lld (%3.0f%%)  %.0f steps/s  %.3g contact-steps/s  ETA %.0f s   ",
+              static_cast<long long>(step), static_cast<long long>(total_),
+              total_ > 0 ? 100.0 * step / total_ : 100.0, rate, contact_steps / t, eta);
+  std::fflush(stdout);
+  printed_ = true;
+}
+
+void ProgressLine::finish() {
+  if (enabled_ && printed_) {
+    std::printf("\n");
+    std::fflush(stdout);
+  }
+}
+
+}  // namespace driver
+}  // namespace epac

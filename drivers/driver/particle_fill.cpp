@@ -1,0 +1,140 @@
+#include "driver/particle_fill.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <random>
+#include <sstream>
+#include <unordered_map>
+
+namespace epac {
+namespace driver {
+namespace {
+
+// Hashed uniform grid of cell size h >= 2 R_max: overlapping spheres lie in neighbouring cells.
+// Distinct cells may share a hash bucket; that only adds candidates, never loses one.
+class HostGrid {
+ public:
+  explicit HostGrid(double h) : h_(h) {}
+  void insert(const Vec3d& x, int id) { cells_[key(cell(x[0]), cell(x[1]), cell(x[2]))].push_back(id); }
+  // Calls f(id) for every particle in the 27 cells around x; stops when f returns true.
+  template <class F>
+  bool any_near(const Vec3d& x, F&& f) const {
+    const std::int64_t c[3] = {cell(x[0]), cell(x[1]), cell(x[2])};
+    for (std::int64_t a = -1; a <= 1; ++a)
+      for (std::int64_t b = -1; b <= 1; ++b)
+        for (std::int64_t d = -1; d <= 1; ++d) {
+          auto it = cells_.find(key(c[0] + a, c[1] + b, c[2] + d));
+          if (it == cells_.end()) continue;
+          for (int id : it->second)
+            if (f(id)) return true;
+        }
+    return false;
+  }
+
+ private:
+  std::int64_t cell(double v) const { return static_cast<std::int64_t>(std::floor(v / h_)); }
+  static std::uint64_t key(std::int64_t a, std::int64_t b, std::int64_t c) {
+    return static_cast<std::uint64_t>(a) * 73856093ULL ^ static_cast<std::uint64_t>(b) * 19349663ULL ^
+           static_cast<std::uint64_t>(c) * 83492791ULL;
+  }
+  double h_;
+  std::unordered_map<std::uint64_t, std::vector<int>> cells_;
+};
+
+double distance(const Vec3d& a, const Vec3d& b) {
+  const double dx = a[0] - b[0], dy = a[1] - b[1], dz = a[2] - b[2];
+  return std::sqrt(dx * dx + dy * dy + dz * dz);
+}
+
+double max_radius(const std::vector<ParticleSpec>& ps, double r) {
+  for (const auto& p : ps) r = std::max(r, p.radius);
+  return r;
+}
+
+}  // namespace
+
+void check_no_overlap(const std::vector<ParticleSpec>& ps) {
+  if (ps.size() < 2) return;
+  HostGrid grid(2.0 * max_radius(ps, 0.0));
+  for (int i = 0; i < static_cast<int>(ps.size()); ++i) {
+    int hit = -1;
+    grid.any_near(ps[i].position, [&](int j) {
+      const double d = distance(ps[i].position, ps[j].position);
+      const double sum = ps[i].radius + ps[j].radius;
+      if (sum - d > 1e-12 * sum) { hit = j; return true; }
+      return false;
+    });
+    if (hit >= 0) {
+      const auto& a = ps[hit];
+      const auto& b = ps[i];
+      const double d = distance(a.position, b.position);
+      std::ostringstream s;
+      s << a.origin << " and " << b.origin << " overlap by " << (a.radius + b.radius - d)
+        << " m (centre distance " << d << " m < R_i + R_j = " << (a.radius + b.radius)
+        << " m; valid: distance >= R_i + R_j); set particles.allow_overlap = true to allow it";
+      throw SceneError(s.str());
+    }
+    grid.insert(ps[i].position, i);
+  }
+}
+
+void fill_box(const FillSpec& f, std::vector<ParticleSpec>& ps) {
+  if (!f.enabled || f.count == 0) return;
+  for (int d = 0; d < 3; ++d) {
+    if (f.box_max[d] - f.box_min[d] <= 2.0 * f.radius_max) {
+      std::ostringstream s;
+      s << "particles.fill.box_max[" << d << "] - box_min[" << d << "] = " << (f.box_max[d] - f.box_min[d])
+        << " m is outside the valid range (2 radius_max = " << 2.0 * f.radius_max << ", inf)";
+      throw SceneError(s.str());
+    }
+  }
+  // Solid fraction the fill asks for: count x E[4/3 pi R^3], R uniform in [rmin, rmax].
+  const double r0 = f.radius_min, r1 = f.radius_max;
+  const double mean_r3 = r1 > r0 ? (r1 * r1 * r1 * r1 - r0 * r0 * r0 * r0) / (4.0 * (r1 - r0)) : r0 * r0 * r0;
+  const double box = (f.box_max[0] - f.box_min[0]) * (f.box_max[1] - f.box_min[1]) * (f.box_max[2] - f.box_min[2]);
+  const double fraction = static_cast<double>(f.count) * 4.0 / 3.0 * M_PI * mean_r3 / box;
+  if (fraction > 0.38) {
+    std::ostringstream s;
+    s << "particles.fill.count = " << f.count << " asks for a solid volume fraction " << fraction
+      << " of the box, outside the valid range (0, 0.38] of a random non-overlapping fill "
+         "(the random-sequential-addition jamming limit); enlarge the box or lower the count";
+    throw SceneError(s.str());
+  }
+
+  std::mt19937_64 rng(f.seed);
+  auto uniform = [&rng](double lo, double hi) {  // 53 random bits: the same on every platform
+    const double u = static_cast<double>(rng() >> 11) * (1.0 / 9007199254740992.0);
+    return lo + (hi - lo) * u;
+  };
+  HostGrid grid(2.0 * max_radius(ps, f.radius_max));
+  for (int i = 0; i < static_cast<int>(ps.size()); ++i) grid.insert(ps[i].position, i);
+
+  const std::int64_t max_attempts = 500 * f.count + 10000;
+  std::int64_t attempts = 0, placed = 0;
+  while (placed < f.count) {
+    if (++attempts > max_attempts) {
+      std::ostringstream s;
+      s << "particles.fill: placed only " << placed << " of count = " << f.count << " particles after "
+        << max_attempts << " attempts (solid fraction " << fraction
+        << "); enlarge the box or lower the count";
+      throw SceneError(s.str());
+    }
+    ParticleSpec p;
+    p.radius = r1 > r0 ? uniform(r0, r1) : r0;
+    for (int d = 0; d < 3; ++d) p.position[d] = uniform(f.box_min[d] + p.radius, f.box_max[d] - p.radius);
+    const bool blocked = grid.any_near(p.position, [&](int j) {
+      return distance(p.position, ps[j].position) < p.radius + ps[j].radius;
+    });
+    if (blocked) continue;
+    p.material = f.material;
+    p.velocity = f.velocity;
+    p.origin = "particles.fill[" + std::to_string(placed) + "]";
+    grid.insert(p.position, static_cast<int>(ps.size()));
+    ps.push_back(p);
+    ++placed;
+  }
+}
+
+}  // namespace driver
+}  // namespace epac

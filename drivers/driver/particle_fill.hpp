@@ -1,0 +1,22 @@
+#pragma once
+// Host-side placement of particles: the overlap check of an explicit list, and the random
+// non-overlapping fill of a box (random sequential addition on a hashed grid: O(N)).
+#include "driver/scene.hpp"
+
+#include <vector>
+
+namespace epac {
+namespace driver {
+
+// Throws SceneError naming the first two particles found overlapping (distance < R_i + R_j by
+// more than 1e-12 (R_i + R_j), so exactly touching particles written with rounded coordinates
+// pass), the overlap and the distance.
+void check_no_overlap(const std::vector<ParticleSpec>& particles);
+
+// Appends fill.count particles, none overlapping each other or the particles already present,
+// each wholly inside the box. Deterministic for a given seed. Throws SceneError when the box
+// cannot hold them (the random-sequential-addition jamming limit is about 0.38 solid fraction).
+void fill_box(const FillSpec& fill, std::vector<ParticleSpec>& particles);
+
+}  // namespace driver
+}  // namespace epac

@@ -1,0 +1,35 @@
+#pragma once
+// What the command line adds to a scene, and what a run reports (summary.json).
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace epac {
+namespace driver {
+
+struct RunOptions {
+  std::string out_dir = "epac-out";
+  std::int64_t steps = -1;           // >= 0 overrides [run] steps
+  std::string precision = "double";  // "double" | "float"
+  bool quiet = false;                // no informational lines, no progress line
+  bool progress = false;             // the \r progress line (main sets it when stdout is a terminal)
+};
+
+struct RunSummary {
+  std::string scene, model, effects, scalar, backend;
+  int threads = 0;
+  std::int64_t particles = 0, walls = 0, steps = 0, rebuilds = 0;
+  double dt = 0, simulated_time = 0;
+  double wall_time_s = 0;             // the stepping loop only
+  double setup_time_s = 0;            // device state, first detection and forces
+  double contacts_mean = 0;           // active contacts (overlap > 0), mean over output samples
+  double contact_list_mean = 0;       // entries of the pair + wall lists, mean over steps
+  double contact_steps_per_second = 0;         // list entries evaluated per second of wall time
+  double active_contact_steps_per_second = 0;  // contacts_mean x steps / wall time
+  int history_fields = 0;
+  std::size_t bytes_per_contact = 0;
+  std::string timeseries_path, summary_path;
+};
+
+}  // namespace driver
+}  // namespace epac

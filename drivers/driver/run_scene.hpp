@@ -1,0 +1,301 @@
+#pragma once
+// One run of a scene with one compiled (model, effects, scalar) instance: device state, contact
+// detection with a skin, velocity-Verlet steps, outputs (design.md section 4).
+#include "driver/contact_detection.hpp"
+#include "driver/diagnostics.hpp"
+#include "driver/effect_selection.hpp"
+#include "driver/integrator.hpp"
+#include "driver/model_factory.hpp"
+#include "driver/outputs.hpp"
+#include "driver/run_options.hpp"
+#include "driver/scene.hpp"
+
+#include <epac/compute/contact_forces.hpp>
+#include <epac/state/particles.hpp>
+#include <epac/state/walls.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <type_traits>
+
+namespace epac {
+namespace driver {
+
+// Device particle state from the scene's particles.
+template <class T, class Device>
+Particles<T, Device> make_particles(const Scene& s, Kokkos::View<unsigned char*, Device>& driven) {
+  const int n = static_cast<int>(s.particles.size());
+  Particles<T, Device> p(n);
+  driven = Kokkos::View<unsigned char*, Device>("epac::driver::driven", n);
+  auto x = Kokkos::create_mirror_view(p.x);
+  auto v = Kokkos::create_mirror_view(p.v);
+  auto w = Kokkos::create_mirror_view(p.omega);
+  auto m = Kokkos::create_mirror_view(p.mass);
+  auto I = Kokkos::create_mirror_view(p.inertia);
+  auto r0 = Kokkos::create_mirror_view(p.radius0);
+  auto mat = Kokkos::create_mirror_view(p.material);
+  auto gid = Kokkos::create_mirror_view(p.gid);
+  auto dr = Kokkos::create_mirror_view(driven);
+  for (int i = 0; i < n; ++i) {
+    const ParticleSpec& q = s.particles[i];
+    const double mass = sphere_mass(s.materials[q.material].density, q.radius);
+    for (int d = 0; d < 3; ++d) {
+      x(i, d) = T(q.position[d]);
+      v(i, d) = T(q.velocity[d]);
+      w(i, d) = T(q.angular_velocity[d]);
+    }
+    m(i) = T(mass);
+    I(i) = T(0.4 * mass * q.radius * q.radius);
+    r0(i) = T(q.radius);
+    mat(i) = q.material;
+    gid(i) = i;
+    dr(i) = q.driven ? 1 : 0;
+  }
+  Kokkos::deep_copy(p.x, x);
+  Kokkos::deep_copy(p.v, v);
+  Kokkos::deep_copy(p.omega, w);
+  Kokkos::deep_copy(p.mass, m);
+  Kokkos::deep_copy(p.inertia, I);
+  Kokkos::deep_copy(p.radius0, r0);
+  Kokkos::deep_copy(p.radius, r0);
+  Kokkos::deep_copy(p.material, mat);
+  Kokkos::deep_copy(p.gid, gid);
+  Kokkos::deep_copy(driven, dr);
+  return p;
+}
+
+// Wall positions are kept on the host in double (exact prescribed displacement, no drift in
+// float) and copied to the device after each move; the velocity of a step is its displacement
+// over dt, so damping and friction see the mean velocity of the step.
+template <class T, class Device>
+class WallDriver {
+ public:
+  WallDriver(const Scene& s, Walls<T, Device>& w) : specs_(s.walls), w_(w) {
+    const int nw = static_cast<int>(specs_.size());
+    w_ = Walls<T, Device>(nw);
+    point_ = Kokkos::create_mirror_view(w_.point);
+    vel_ = Kokkos::create_mirror_view(w_.velocity);
+    auto nrm = Kokkos::create_mirror_view(w_.normal);
+    auto mat = Kokkos::create_mirror_view(w_.material);
+    pos_.resize(nw);
+    at_build_.resize(nw);
+    for (int k = 0; k < nw; ++k) {
+      pos_[k] = specs_[k].point;
+      for (int d = 0; d < 3; ++d) {
+        point_(k, d) = T(pos_[k][d]);
+        nrm(k, d) = T(specs_[k].normal[d]);
+        vel_(k, d) = T(0);
+      }
+      mat(k) = specs_[k].material;
+    }
+    Kokkos::deep_copy(w_.point, point_);
+    Kokkos::deep_copy(w_.normal, nrm);
+    Kokkos::deep_copy(w_.velocity, vel_);
+    Kokkos::deep_copy(w_.material, mat);
+  }
+
+  // Moves the walls over [t0, t0 + dt].
+  void advance(double t0, double dt) {
+    bool changed = false;
+    for (std::size_t k = 0; k < specs_.size(); ++k) {
+      const Vec3d d = specs_[k].displacement(t0, t0 + dt);
+      for (int c = 0; c < 3; ++c) {
+        const T vel = T(d[c] / dt);
+        if (d[c] != 0.0 || vel_(k, c) != vel) changed = true;
+        pos_[k][c] += d[c];
+        point_(k, c) = T(pos_[k][c]);
+        vel_(k, c) = vel;
+      }
+    }
+    if (changed) {
+      Kokkos::deep_copy(w_.point, point_);
+      Kokkos::deep_copy(w_.velocity, vel_);
+    }
+  }
+
+  // Displacement of wall k along its normal since t = 0.
+  double normal_displacement(int k) const {
+    double s = 0;
+    for (int d = 0; d < 3; ++d) s += (pos_[k][d] - specs_[k].point[d]) * specs_[k].normal[d];
+    return s;
+  }
+
+  // The rebuild rule's wall measure, on the host: max_w |normal displacement since mark_build()|.
+  void mark_build() { at_build_ = pos_; }
+  double max_shift_since_build() const {
+    double m = 0;
+    for (std::size_t k = 0; k < pos_.size(); ++k) {
+      double s = 0;
+      for (int d = 0; d < 3; ++d) s += (pos_[k][d] - at_build_[k][d]) * specs_[k].normal[d];
+      m = std::max(m, std::fabs(s));
+    }
+    return m;
+  }
+
+ private:
+  const std::vector<WallSpec>& specs_;
+  Walls<T, Device>& w_;
+  host_mirror_t<typename Walls<T, Device>::vec_view> point_, vel_;
+  std::vector<Vec3d> pos_, at_build_;
+};
+
+template <template <class, unsigned, class> class Factory, class T, unsigned Bits>
+RunSummary run_scene(const Scene& scene, const RunOptions& opt) {
+  using Device = DefaultDevice;
+  using exec = typename Device::execution_space;
+  using F = Factory<T, Bits, Device>;
+  using Model = typename F::model_type;
+  using clock = std::chrono::steady_clock;
+  static_assert(Model::effects::bits == Bits, "the factory must build the model with the dispatched effects");
+
+  const auto setup_start = clock::now();
+  const Model model = F::create(scene);  // host validation: throws before anything is written
+
+  RunSummary sum;
+  sum.scene = scene.source;
+  sum.model = scene.model.name;
+  sum.effects = effect_names(Bits);
+  sum.scalar = std::is_same<T, float>::value ? "float" : "double";
+  sum.backend = exec::name();
+  sum.threads = exec().concurrency();
+  sum.particles = static_cast<std::int64_t>(scene.particles.size());
+  sum.walls = static_cast<std::int64_t>(scene.walls.size());
+  sum.steps = opt.steps >= 0 ? opt.steps : scene.run.steps;
+  sum.dt = scene.run.dt;
+  sum.history_fields = F::pair_history_fields;
+  sum.bytes_per_contact = bytes_per_contact(F::pair_history_fields, sizeof(T));
+
+  make_output_dir(opt.out_dir);
+  sum.timeseries_path = opt.out_dir + "/timeseries.csv";
+  sum.summary_path = opt.out_dir + "/summary.json";
+
+  const bool info = !opt.quiet;
+  if (info) {
+    std::printf("epac-run: %s: %lld particles, %lld walls, %zu materials\n", scene.source.c_str(),
+                static_cast<long long>(sum.particles), static_cast<long long>(sum.walls), scene.materials.size());
+    std::printf("model %s, scalar %s, backend %s, %d threads\n", sum.model.c_str(), sum.scalar.c_str(),
+                sum.backend.c_str(), sum.threads);
+    std::printf("effects: %s (%s)\n", sum.effects.c_str(),
+                scene.model.effects_overridden ? "set in [model] effects" : "derived from the materials");
+    for (const auto& note : scene.model.notes) std::printf("note: %s\n", note.c_str());
+    std::printf("storage: pairs %s; walls %s\n", bytes_per_contact_text(F::pair_history_fields, sizeof(T)).c_str(),
+                bytes_per_contact_text(F::wall_history_fields, sizeof(T)).c_str());
+    std::printf("dt = %g s (%.3g of the smallest Rayleigh time), %lld steps, skin %g m, output every %lld steps\n",
+                scene.run.dt, scene.run.dt / rayleigh_time(scene), static_cast<long long>(sum.steps),
+                scene.run.skin, static_cast<long long>(scene.run.output_interval));
+    std::fflush(stdout);
+  }
+
+  Kokkos::View<unsigned char*, Device> driven;
+  Particles<T, Device> p = make_particles<T, Device>(scene, driven);
+  const bool any_driven = scene.any_driven();
+  Walls<T, Device> walls;
+  WallDriver<T, Device> wall_driver(scene, walls);
+  const Vec3<T> g(T(scene.gravity[0]), T(scene.gravity[1]), T(scene.gravity[2]));
+  const T dt = T(scene.run.dt);
+  const T half_dt = T(0.5 * scene.run.dt);
+  const int nw = walls.n;
+
+  ContactDetector<T, Device> det(T(scene.run.skin), F::pair_history_fields, F::wall_history_fields);
+  det.build(p, walls);
+  wall_driver.mark_build();
+
+  ContactOutputs<T, Device> pair_out, wall_out;
+  auto size_outputs = [&]() {
+    auto fit = [](ContactOutputs<T, Device>& o, int count, const char* label) {
+      if (static_cast<int>(o.overlap.extent(0)) >= count) return;
+      const int cap = count + count / 4 + 16;
+      o.normal_force = Kokkos::View<T*, Device>(std::string(label) + ".normal_force", cap);
+      o.overlap = Kokkos::View<T*, Device>(std::string(label) + ".overlap", cap);
+    };
+    fit(pair_out, det.pairs.count, "pair_out");
+    fit(wall_out, det.walls.count, "wall_out");
+  };
+  // Forces are zeroed by kick_drift (and are zero on allocation before the first pass).
+  auto force_pass = [&](T step_dt, bool with_outputs) {
+    F::before_forces(model, p, step_dt);
+    if (with_outputs) size_outputs();
+    const ContactOutputs<T, Device> none{};
+    compute_pair_forces(model, p, det.pairs, det.pair_history, step_dt, with_outputs ? pair_out : none);
+    if (nw > 0) compute_wall_forces(model, p, walls, det.walls, det.wall_history, step_dt, with_outputs ? wall_out : none);
+    F::after_forces(model, p, step_dt);
+  };
+
+  TimeseriesWriter csv(sum.timeseries_path, [&] {
+    std::vector<std::string> names;
+    for (const auto& w : scene.walls) names.push_back(w.name);
+    return names;
+  }(), any_driven);
+  double active_sum = 0;
+  std::int64_t samples = 0;
+  auto write_sample = [&](std::int64_t step) {
+    Sample s;
+    s.step = step;
+    s.time = step * scene.run.dt;
+    sample_state(p, driven, any_driven, g, det.pairs, det.walls, pair_out, wall_out, nw, s);
+    s.wall_displacement.resize(nw);
+    for (int k = 0; k < nw; ++k) s.wall_displacement[k] = wall_driver.normal_displacement(k);
+    csv.write(s);
+    active_sum += static_cast<double>(s.pair_contacts + s.wall_contacts);
+    ++samples;
+  };
+
+  // First force pass with dt = 0: forces for the opening half kick; no tangential increment.
+  force_pass(T(0), true);
+  write_sample(0);
+  Kokkos::fence();
+  sum.setup_time_s = std::chrono::duration<double>(clock::now() - setup_start).count();
+
+  const std::int64_t steps = sum.steps;
+  const std::int64_t every = scene.run.output_interval;
+  ProgressLine progress(opt.progress && !opt.quiet, steps);
+  double list_steps = 0;
+  const std::int64_t builds0 = det.builds;
+  const auto loop_start = clock::now();
+  bool full_step_velocities = true;  // v is at a whole step (after a closing half kick)
+  for (std::int64_t step = 1; step <= steps; ++step) {
+    // closing half kick of the previous step (if deferred) + opening half kick + drift
+    const T shift = kick_drift(p, driven, g, full_step_velocities ? half_dt : dt, dt, det.reference_positions(),
+                               det.reference_radii());
+    wall_driver.advance((step - 1) * scene.run.dt, scene.run.dt);
+    if (det.needs_rebuild(shift, T(wall_driver.max_shift_since_build()))) {
+      det.build(p, walls);
+      wall_driver.mark_build();
+    }
+    const bool output = step % every == 0 || step == steps;
+    force_pass(dt, output);
+    full_step_velocities = output;
+    if (output) {
+      half_kick(p, driven, g, half_dt);  // closing half kick now: samples need whole-step velocities
+      write_sample(step);
+    }
+    list_steps += det.pairs.count + det.walls.count;
+    progress.update(step, list_steps);
+  }
+  Kokkos::fence();
+  sum.wall_time_s = std::chrono::duration<double>(clock::now() - loop_start).count();
+  progress.finish();
+
+  sum.rebuilds = det.builds - builds0;
+  sum.simulated_time = steps * scene.run.dt;
+  sum.contacts_mean = samples > 0 ? active_sum / samples : 0.0;
+  sum.contact_list_mean = steps > 0 ? list_steps / steps : static_cast<double>(det.pairs.count + det.walls.count);
+  if (sum.wall_time_s > 0) {
+    sum.contact_steps_per_second = list_steps / sum.wall_time_s;
+    sum.active_contact_steps_per_second = sum.contacts_mean * steps / sum.wall_time_s;
+  }
+  write_summary_json(sum.summary_path, sum);
+  if (info) {
+    std::printf("%lld steps in %.3f s (setup %.3f s): %.3g contact-steps/s (list entries), %.1f contacts (mean, "
+                "active), %lld rebuilds\n",
+                static_cast<long long>(steps), sum.wall_time_s, sum.setup_time_s, sum.contact_steps_per_second,
+                sum.contacts_mean, static_cast<long long>(sum.rebuilds));
+    std::printf("wrote %s and %s\n", sum.timeseries_path.c_str(), sum.summary_path.c_str());
+  }
+  return sum;
+}
+
+}  // namespace driver
+}  // namespace epac

@@ -1,0 +1,501 @@
+// Scene file parsing and validation (toml++). Every key is read through a TableReader, which
+// records the keys a table may have, type-checks and range-checks values, and rejects any key
+// it was not asked about. Messages name the key with its table, the value and the valid range.
+#include "driver/scene.hpp"
+
+#include "driver/effect_selection.hpp"
+#include "driver/model_registry.hpp"
+#include "driver/particle_fill.hpp"
+
+#include <toml++/toml.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <set>
+#include <sstream>
+
+namespace epac {
+namespace driver {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+std::string type_name(const toml::node& n) {
+  switch (n.type()) {
+    case toml::node_type::table: return "a table";
+    case toml::node_type::array: return "an array";
+    case toml::node_type::string: return "a string";
+    case toml::node_type::integer: return "an integer";
+    case toml::node_type::floating_point: return "a float";
+    case toml::node_type::boolean: return "a boolean";
+    default: return "a date/time";
+  }
+}
+
+std::string line_of(const toml::node& n) {
+  const auto& b = n.source().begin;
+  return b.line > 0 ? " [line " + std::to_string(b.line) + "]" : "";
+}
+
+// Number of a node that must be a number (integer or float). Throws naming `where`.
+double as_number(const toml::node& n, const std::string& where) {
+  if (auto i = n.as_integer()) return static_cast<double>(i->get());
+  if (auto f = n.as_floating_point()) return f->get();
+  throw SceneError(where + " must be a number, got " + type_name(n) + line_of(n));
+}
+
+class TableReader {
+ public:
+  // path: "" for the root, else the table's dotted name ("materials.glass", "particles.list[2]").
+  TableReader(const toml::table& t, std::string path) : t_(t), path_(std::move(path)) {}
+
+  std::string key_path(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
+
+  const toml::node* get(const std::string& key) {
+    allowed_.insert(key);
+    return t_.get(key);
+  }
+  bool has(const std::string& key) { return get(key) != nullptr; }
+
+  // A number in the range; `def` when absent (required when def is empty).
+  double number(const std::string& key, double lo, Bound lk, double hi, Bound hk, std::optional<double> def,
+                bool allow_inf = false) {
+    const toml::node* n = get(key);
+    if (!n) {
+      if (def) return *def;
+      throw SceneError(key_path(key) + " is missing (required; valid range " + range_text(lo, lk, hi, hk) + ")");
+    }
+    const double v = as_number(*n, key_path(key));
+    check(key_path(key), v, lo, lk, hi, hk, allow_inf, *n);
+    return v;
+  }
+  // A number read without a range check (the caller validates it, e.g. Material::validate).
+  std::optional<double> raw_number(const std::string& key) {
+    const toml::node* n = get(key);
+    if (!n) return std::nullopt;
+    return as_number(*n, key_path(key));
+  }
+
+  std::int64_t integer(const std::string& key, std::int64_t lo, std::int64_t hi, std::optional<std::int64_t> def) {
+    const toml::node* n = get(key);
+    if (!n) {
+      if (def) return *def;
+      throw SceneError(key_path(key) + " is missing (required; an integer in [" + std::to_string(lo) + ", " +
+                       std::to_string(hi) + "])");
+    }
+    auto i = n->as_integer();
+    if (!i) throw SceneError(key_path(key) + " must be an integer, got " + type_name(*n) + line_of(*n));
+    const std::int64_t v = i->get();
+    if (v < lo || v > hi)
+      throw SceneError(key_path(key) + " = " + std::to_string(v) + " is outside the valid range [" +
+                       std::to_string(lo) + ", " + std::to_string(hi) + "]" + line_of(*n));
+    return v;
+  }
+
+  bool boolean(const std::string& key, bool def) {
+    const toml::node* n = get(key);
+    if (!n) return def;
+    auto b = n->as_boolean();
+    if (!b) throw SceneError(key_path(key) + " must be true or false, got " + type_name(*n) + line_of(*n));
+    return b->get();
+  }
+
+  std::optional<std::string> string(const std::string& key) {
+    const toml::node* n = get(key);
+    if (!n) return std::nullopt;
+    auto s = n->as_string();
+    if (!s) throw SceneError(key_path(key) + " must be a string, got " + type_name(*n) + line_of(*n));
+    return s->get();
+  }
+
+  // Three finite numbers; `def` when absent (required when def is empty).
+  Vec3d vec3(const std::string& key, std::optional<Vec3d> def) {
+    const toml::node* n = get(key);
+    if (!n) {
+      if (def) return *def;
+      throw SceneError(key_path(key) + " is missing (required; three finite numbers [x, y, z])");
+    }
+    return vec3_of(*n, key_path(key));
+  }
+
+  const toml::table* table(const std::string& key) {
+    const toml::node* n = get(key);
+    if (!n) return nullptr;
+    if (!n->is_table()) throw SceneError(key_path(key) + " must be a table, got " + type_name(*n) + line_of(*n));
+    return n->as_table();
+  }
+  const toml::array* array(const std::string& key) {
+    const toml::node* n = get(key);
+    if (!n) return nullptr;
+    if (!n->is_array()) throw SceneError(key_path(key) + " must be an array, got " + type_name(*n) + line_of(*n));
+    return n->as_array();
+  }
+
+  // Rejects every key nobody asked for.
+  void finish() const {
+    for (auto&& [k, v] : t_) {
+      const std::string key(k.str());
+      if (allowed_.count(key)) continue;
+      std::string valid;
+      for (const auto& a : allowed_) valid += (valid.empty() ? "" : ", ") + a;
+      throw SceneError("unknown key '" + key + "' in " + (path_.empty() ? std::string("the top level") : "[" + path_ + "]") +
+                       line_of(v) + " (valid keys: " + valid + ")");
+    }
+  }
+
+  static std::string range_text(double lo, Bound lk, double hi, Bound hk) {
+    std::ostringstream s;
+    s << (lk == Bound::open ? "(" : "[") << lo << ", ";
+    if (std::isinf(hi)) s << "inf)";
+    else s << hi << (hk == Bound::open ? ")" : "]");
+    return s.str();
+  }
+
+  static void check(const std::string& name, double v, double lo, Bound lk, double hi, Bound hk, bool allow_inf,
+                    const toml::node& n) {
+    try {
+      require_range(name, v, lo, lk, hi, hk, allow_inf);
+    } catch (const ParameterError& e) {
+      throw SceneError(e.what() + line_of(n));
+    }
+  }
+
+  static Vec3d vec3_of(const toml::node& n, const std::string& where) {
+    auto a = n.as_array();
+    if (!a || a->size() != 3)
+      throw SceneError(where + " must be an array of three numbers [x, y, z], got " +
+                       (a ? "an array of " + std::to_string(a->size()) : type_name(n)) + line_of(n));
+    Vec3d v{};
+    for (int d = 0; d < 3; ++d) {
+      const std::string w = where + "[" + std::to_string(d) + "]";
+      v[d] = as_number(*a->get(d), w);
+      check(w, v[d], -kInf, Bound::open, kInf, Bound::open, false, *a->get(d));
+    }
+    return v;
+  }
+
+ private:
+  const toml::table& t_;
+  std::string path_;
+  std::set<std::string> allowed_;
+};
+
+// Index of a material named by `key` in `r`.
+int material_of(TableReader& r, const std::string& key, const Scene& s) {
+  auto name = r.string(key);
+  if (!name) throw SceneError(r.key_path(key) + " is missing (required; the name of a [materials.NAME] table)");
+  auto it = s.material_index.find(*name);
+  if (it == s.material_index.end()) {
+    std::string known;
+    for (const auto& m : s.materials) known += (known.empty() ? "" : ", ") + m.name;
+    throw SceneError(r.key_path(key) + " = \"" + *name + "\" is not a material (valid: " + known + ")");
+  }
+  return it->second;
+}
+
+void parse_materials(TableReader& top, Scene& s) {
+  const toml::table* mt = top.table("materials");
+  if (!mt || mt->empty()) throw SceneError("materials is missing (required: at least one [materials.NAME] table)");
+  for (auto&& [k, node] : *mt) {
+    const std::string name(k.str());
+    const std::string path = "materials." + name;
+    if (!node.is_table()) throw SceneError(path + " must be a table, got " + type_name(node) + line_of(node));
+    TableReader r(*node.as_table(), path);
+    Material m;
+    m.name = name;
+    m.rigid = r.boolean("rigid", false);
+    auto read = [&](const char* key, double& field, bool required) {
+      if (auto v = r.raw_number(key)) field = *v;
+      else if (required)
+        throw SceneError(path + "." + key + " is missing (required for a non-rigid material; valid range (0, inf))");
+    };
+    read("youngs_modulus", m.youngs_modulus, !m.rigid);
+    read("poisson_ratio", m.poisson_ratio, false);
+    read("density", m.density, !m.rigid);
+    read("restitution", m.restitution, false);
+    read("friction", m.friction, false);
+    read("surface_energy", m.surface_energy, false);
+    read("yield_stress", m.yield_stress, false);
+    r.finish();
+    // Material::validate owns the ranges; its messages say "material 'NAME': key", which we
+    // rewrite to the scene's dotted key.
+    try {
+      m.validate();
+    } catch (const ParameterError& e) {
+      std::string msg = e.what();
+      const std::string prefix = "material '" + name + "': ";
+      std::string where = line_of(node);
+      if (msg.compare(0, prefix.size(), prefix) == 0) {
+        const std::string rest = msg.substr(prefix.size());
+        msg = path + "." + rest;
+        if (const toml::node* key = node.as_table()->get(rest.substr(0, rest.find(' ')))) where = line_of(*key);
+      }
+      throw SceneError(msg + where);
+    }
+    s.material_index[name] = static_cast<int>(s.materials.size());
+    s.materials.push_back(m);
+  }
+}
+
+void parse_model(TableReader& top, Scene& s) {
+  static const toml::table empty;
+  const toml::table* mt = top.table("model");
+  TableReader r(mt ? *mt : empty, "model");
+  s.model.name = r.string("name").value_or("hertz_mindlin");
+  const ModelEntry& entry = find_model(s.model.name);
+  for (const auto& k : entry.keys) {
+    s.model.params[k.name] =
+        r.number(k.name, k.lo, k.lo_kind, k.hi, k.hi_kind, k.has_default ? std::optional<double>(k.default_value) : std::nullopt);
+  }
+  if (const toml::array* eff = r.array("effects")) {
+    s.model.effects_overridden = true;
+    unsigned bits = 0;
+    for (std::size_t e = 0; e < eff->size(); ++e) {
+      const toml::node& n = *eff->get(e);
+      const std::string where = "model.effects[" + std::to_string(e) + "]";
+      auto str = n.as_string();
+      if (!str) throw SceneError(where + " must be a string, got " + type_name(n) + line_of(n));
+      const unsigned b = effect_bit(str->get());
+      if (b == 0)
+        throw SceneError(where + " = \"" + str->get() + "\" is not an effect (valid: " + effect_names(kAllEffects) + ")" +
+                         line_of(n));
+      if (!(b & entry.supported_effects))
+        throw SceneError(where + " = \"" + str->get() + "\" is not implemented by model " + entry.name +
+                         " (valid: " + effect_names(entry.supported_effects) + ")" + line_of(n));
+      bits |= b;
+    }
+    s.model.effects = bits | entry.implied_effects;
+  }
+  r.finish();
+}
+
+ParticleSpec parse_particle(const toml::table& t, const std::string& path, const Scene& s) {
+  TableReader r(t, path);
+  ParticleSpec p;
+  p.origin = path;
+  p.position = r.vec3("position", std::nullopt);
+  p.radius = r.number("radius", 0.0, Bound::open, kInf, Bound::open, std::nullopt);
+  p.material = material_of(r, "material", s);
+  p.velocity = r.vec3("velocity", Vec3d{0, 0, 0});
+  p.angular_velocity = r.vec3("angular_velocity", Vec3d{0, 0, 0});
+  p.driven = r.boolean("driven", false);
+  r.finish();
+  return p;
+}
+
+void parse_particles(TableReader& top, Scene& s) {
+  const toml::table* pt = top.table("particles");
+  if (!pt) throw SceneError("particles is missing (required: [[particles.list]] entries and/or [particles.fill])");
+  TableReader r(*pt, "particles");
+  s.allow_overlap = r.boolean("allow_overlap", false);
+  if (const toml::array* list = r.array("list")) {
+    for (std::size_t k = 0; k < list->size(); ++k) {
+      const std::string path = "particles.list[" + std::to_string(k) + "]";
+      const toml::node& n = *list->get(k);
+      if (!n.is_table()) throw SceneError(path + " must be a table, got " + type_name(n) + line_of(n));
+      s.particles.push_back(parse_particle(*n.as_table(), path, s));
+    }
+  }
+  if (const toml::table* ft = r.table("fill")) {
+    TableReader f(*ft, "particles.fill");
+    FillSpec& fill = s.fill;
+    fill.enabled = true;
+    fill.box_min = f.vec3("box_min", std::nullopt);
+    fill.box_max = f.vec3("box_max", std::nullopt);
+    fill.count = f.integer("count", 0, 100000000, std::nullopt);
+    fill.radius_min = f.number("radius_min", 0.0, Bound::open, kInf, Bound::open, std::nullopt);
+    fill.radius_max = f.number("radius_max", fill.radius_min, Bound::closed, kInf, Bound::open, fill.radius_min);
+    fill.material = material_of(f, "material", s);
+    fill.seed = static_cast<std::uint64_t>(f.integer("seed", 0, std::numeric_limits<std::int64_t>::max(), 1));
+    fill.velocity = f.vec3("velocity", Vec3d{0, 0, 0});
+    f.finish();
+  }
+  r.finish();
+}
+
+void parse_walls(TableReader& top, Scene& s) {
+  const toml::array* wa = top.array("walls");
+  if (!wa) return;
+  for (std::size_t k = 0; k < wa->size(); ++k) {
+    const std::string path = "walls[" + std::to_string(k) + "]";
+    const toml::node& n = *wa->get(k);
+    if (!n.is_table()) throw SceneError(path + " must be a table ([[walls]]), got " + type_name(n) + line_of(n));
+    TableReader r(*n.as_table(), path);
+    WallSpec w;
+    w.name = r.string("name").value_or("wall" + std::to_string(k));
+    w.point = r.vec3("point", std::nullopt);
+    const Vec3d nrm = r.vec3("normal", std::nullopt);
+    const double len = std::sqrt(nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2]);
+    if (!(len > 0.0) || !std::isfinite(len)) {
+      std::ostringstream m;
+      m << path << ".normal = [" << nrm[0] << ", " << nrm[1] << ", " << nrm[2] << "] has length " << len
+        << ", outside the valid range (0, inf)" << line_of(n);
+      throw SceneError(m.str());
+    }
+    for (int d = 0; d < 3; ++d) w.normal[d] = nrm[d] / len;
+    w.material = material_of(r, "material", s);
+    const bool has_velocity = r.has("velocity");
+    w.velocity = r.vec3("velocity", Vec3d{0, 0, 0});
+    if (const toml::array* motion = r.array("motion")) {
+      if (has_velocity) throw SceneError(path + ": give either velocity or motion, not both" + line_of(n));
+      for (std::size_t m = 0; m < motion->size(); ++m) {
+        const std::string mp = path + ".motion[" + std::to_string(m) + "]";
+        const toml::node& mn = *motion->get(m);
+        if (!mn.is_table()) throw SceneError(mp + " must be a table {duration = .., velocity = [..]}, got " + type_name(mn) + line_of(mn));
+        TableReader sr(*mn.as_table(), mp);
+        MotionSegment seg;
+        seg.duration = sr.number("duration", 0.0, Bound::open, kInf, Bound::open, std::nullopt);
+        seg.velocity = sr.vec3("velocity", std::nullopt);
+        sr.finish();
+        w.segments.push_back(seg);
+      }
+      if (w.segments.empty()) throw SceneError(path + ".motion is empty (give at least one {duration, velocity})" + line_of(n));
+    }
+    r.finish();
+    s.walls.push_back(w);
+  }
+}
+
+void parse_run(TableReader& top, Scene& s) {
+  const toml::table* rt = top.table("run");
+  if (!rt) throw SceneError("run is missing (required: [run] with dt and steps)");
+  TableReader r(*rt, "run");
+  s.run.dt = r.number("dt", 0.0, Bound::open, kInf, Bound::open, std::nullopt);
+  s.run.steps = r.integer("steps", 0, 1000000000000LL, std::nullopt);
+  s.run.output_interval = r.integer("output_interval", 1, 1000000000000LL, std::int64_t(0));
+  s.run.skin = r.number("skin", 0.0, Bound::closed, kInf, Bound::open, -1.0);
+  r.finish();
+}
+
+// Cross-checks after every table is read, then the derived quantities.
+void finish_scene(Scene& s) {
+  std::set<int> pm, wm;
+  for (const auto& p : s.particles) pm.insert(p.material);
+  if (s.fill.enabled && s.fill.count > 0) pm.insert(s.fill.material);
+  for (const auto& w : s.walls) wm.insert(w.material);
+  if (pm.empty() && !s.fill.enabled)
+    throw SceneError("particles: no particles (give [[particles.list]] entries or [particles.fill])");
+  for (int m : pm) {
+    const Material& mat = s.materials[m];
+    if (!(mat.density > 0.0) || !std::isfinite(mat.density))
+      throw SceneError("materials." + mat.name + ".density = " + std::to_string(mat.density) +
+                       " is outside the valid range (0, inf) (particles are made of it)");
+  }
+  // Two rigid bodies that can meet have no contact law.
+  for (int a : pm) {
+    for (int b : pm)
+      if (s.materials[a].rigid && s.materials[b].rigid)
+        throw SceneError("materials." + s.materials[a].name + " and materials." + s.materials[b].name +
+                         " are both rigid and both particle materials: two rigid bodies cannot be in contact");
+    for (int b : wm)
+      if (s.materials[a].rigid && s.materials[b].rigid)
+        throw SceneError("materials." + s.materials[a].name + " (particles) and materials." + s.materials[b].name +
+                         " (walls) are both rigid: two rigid bodies cannot be in contact");
+  }
+
+  if (!s.allow_overlap) check_no_overlap(s.particles);
+  fill_box(s.fill, s.particles);
+  if (s.particles.empty()) throw SceneError("particles: no particles (particles.fill.count = 0 and no list)");
+
+  if (s.run.output_interval == 0) s.run.output_interval = std::max<std::int64_t>(1, s.run.steps / 100);
+  if (s.run.skin < 0) s.run.skin = 0.2 * s.min_radius();
+
+  const ModelEntry& entry = find_model(s.model.name);
+  s.model.derived_effects = derive_effects(s.materials, std::vector<int>(pm.begin(), pm.end()),
+                                           std::vector<int>(wm.begin(), wm.end()));
+  if (!s.model.effects_overridden) {
+    s.model.effects = (s.model.derived_effects | entry.implied_effects) & entry.supported_effects;
+    const unsigned ignored = s.model.derived_effects & ~entry.supported_effects;
+    if (ignored)
+      s.model.notes.push_back("the materials call for " + effect_names(ignored) + ", which model " + entry.name +
+                              " does not implement: ignored");
+  }
+}
+
+Scene parse_table(const toml::table& root, const std::string& source) {
+  Scene s;
+  s.source = source;
+  TableReader top(root, "");
+  s.description = top.string("description").value_or("");
+  parse_materials(top, s);  // first: the others refer to materials by name
+  parse_model(top, s);
+  parse_particles(top, s);
+  parse_walls(top, s);
+  s.gravity = top.vec3("gravity", Vec3d{0, 0, 0});
+  parse_run(top, s);
+  top.finish();
+  finish_scene(s);
+  return s;
+}
+
+[[noreturn]] void rethrow_syntax(const toml::parse_error& e, const std::string& source) {
+  std::ostringstream m;
+  m << source << ":" << e.source().begin.line << ":" << e.source().begin.column << ": TOML syntax error: " << e.description();
+  throw SceneError(m.str());
+}
+
+}  // namespace
+
+Vec3d WallSpec::displacement(double t0, double t1) const {
+  Vec3d d{0, 0, 0};
+  if (segments.empty()) {
+    for (int k = 0; k < 3; ++k) d[k] = velocity[k] * (t1 - t0);
+    return d;
+  }
+  double start = 0.0;
+  for (const auto& seg : segments) {
+    const double end = start + seg.duration;
+    const double overlap = std::min(t1, end) - std::max(t0, start);
+    if (overlap > 0)
+      for (int k = 0; k < 3; ++k) d[k] += seg.velocity[k] * overlap;
+    start = end;
+    if (start >= t1) break;
+  }
+  return d;
+}
+
+double Scene::min_radius() const {
+  double r = kInf;
+  for (const auto& p : particles) r = std::min(r, p.radius);
+  return r;
+}
+double Scene::max_radius() const {
+  double r = 0;
+  for (const auto& p : particles) r = std::max(r, p.radius);
+  return r;
+}
+double rayleigh_time(const Scene& s) {
+  double t = kInf;
+  for (const auto& p : s.particles) {
+    const Material& m = s.materials[p.material];
+    if (m.rigid) continue;
+    const double tr = M_PI * p.radius * std::sqrt(m.density / m.shear_modulus()) / (0.1631 * m.poisson_ratio + 0.8766);
+    t = std::min(t, tr);
+  }
+  return t;
+}
+
+bool Scene::any_driven() const {
+  return std::any_of(particles.begin(), particles.end(), [](const ParticleSpec& p) { return p.driven; });
+}
+
+Scene parse_scene_file(const std::string& path) {
+  try {
+    return parse_table(toml::parse_file(path), path);
+  } catch (const toml::parse_error& e) {
+    rethrow_syntax(e, path);
+  }
+}
+
+Scene parse_scene_string(const std::string& text, const std::string& source) {
+  try {
+    return parse_table(toml::parse(text, source), source);
+  } catch (const toml::parse_error& e) {
+    rethrow_syntax(e, source);
+  }
+}
+
+}  // namespace driver
+}  // namespace epac

@@ -1,0 +1,114 @@
+#pragma once
+// A scene (host side, double precision): what a scene file describes, after parsing and
+// validation. Nothing here touches Kokkos; run_scene.hpp turns a Scene into device state.
+// The file format is documented in drivers/README.md.
+#include <epac/params/material.hpp>
+#include <epac/params/validation.hpp>
+
+#include <array>
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace epac {
+namespace driver {
+
+using Vec3d = std::array<double, 3>;
+
+// Every error in a scene file: names the key (with its table), the value and the valid range.
+class SceneError : public ParameterError {
+ public:
+  using ParameterError::ParameterError;
+};
+
+struct ParticleSpec {
+  Vec3d position{0, 0, 0};
+  Vec3d velocity{0, 0, 0};
+  Vec3d angular_velocity{0, 0, 0};
+  double radius = 0;
+  int material = 0;
+  bool driven = false;  // velocity prescribed (not integrated): a sphere under prescribed displacement
+  std::string origin;   // "particles.list[3]" or "particles.fill": for messages
+};
+
+// One piece of a piecewise-constant wall velocity (prescribed displacement).
+struct MotionSegment {
+  double duration = 0;  // [s]
+  Vec3d velocity{0, 0, 0};
+};
+
+struct WallSpec {
+  std::string name;      // optional; "wall<k>" if absent
+  Vec3d point{0, 0, 0};  // a point on the plane
+  Vec3d normal{0, 0, 1}; // unit normal into the domain (normalised on input)
+  int material = 0;
+  // Either a constant velocity forever (segments empty), or the segments in order; after the
+  // last segment the wall stands still.
+  Vec3d velocity{0, 0, 0};
+  std::vector<MotionSegment> segments;
+
+  // Displacement of the wall between t0 and t1 (t1 >= t0): the exact integral of the velocity.
+  Vec3d displacement(double t0, double t1) const;
+};
+
+struct FillSpec {
+  bool enabled = false;
+  Vec3d box_min{0, 0, 0}, box_max{0, 0, 0};
+  std::int64_t count = 0;
+  double radius_min = 0, radius_max = 0;
+  int material = 0;
+  std::uint64_t seed = 1;
+  Vec3d velocity{0, 0, 0};
+};
+
+struct ModelSpec {
+  std::string name = "hertz_mindlin";
+  std::map<std::string, double> params;  // model-specific keys (model_registry.cpp lists them)
+  bool effects_overridden = false;
+  unsigned derived_effects = 0;  // from the materials (design.md section 5)
+  unsigned effects = 0;          // the active set: derived (masked by the model) or the override
+  std::vector<std::string> notes;  // e.g. effects the model ignores
+};
+
+struct RunSpec {
+  double dt = 0;
+  std::int64_t steps = 0;
+  std::int64_t output_interval = 0;  // 0: steps / 100 (at least 1)
+  double skin = -1;                  // < 0: 0.2 x the smallest radius
+};
+
+struct Scene {
+  std::string source;          // file name or "<string>"
+  std::string description;
+  std::vector<Material> materials;
+  std::map<std::string, int> material_index;
+  ModelSpec model;
+  std::vector<ParticleSpec> particles;  // the explicit list, then the fill
+  FillSpec fill;
+  bool allow_overlap = false;
+  std::vector<WallSpec> walls;
+  Vec3d gravity{0, 0, 0};
+  RunSpec run;
+
+  double min_radius() const;
+  double max_radius() const;
+  bool any_driven() const;
+};
+
+// Parses and validates a scene. Throws SceneError (a ParameterError) with a message naming the
+// key, its table, the value and the valid range; nothing else happens before it returns.
+Scene parse_scene_file(const std::string& path);
+Scene parse_scene_string(const std::string& text, const std::string& source = "<string>");
+
+// Smallest Rayleigh time over the particles, pi R sqrt(rho/G) / (0.1631 nu + 0.8766): the
+// usual bound for an explicit DEM time step with Hertz contacts (dt ~ 0.1-0.3 of it).
+double rayleigh_time(const Scene& s);
+
+// Particle mass (sphere of density rho) and moment of inertia (2/5) m R^2.
+inline double sphere_mass(double density, double radius) {
+  return density * 4.0 / 3.0 * 3.14159265358979323846 * radius * radius * radius;
+}
+
+}  // namespace driver
+}  // namespace epac

@@ -1,0 +1,262 @@
+// Device contact detection: the cell list finds exactly the pairs and wall contacts an O(N^2)
+// search finds; the rebuild rule; history of persisting contacts survives a rebuild + remap.
+#include <backends.hpp>
+#include <catch2/catch.hpp>
+
+#include "driver/contact_detection.hpp"
+
+#include <algorithm>
+#include <random>
+#include <set>
+#include <utility>
+#include <vector>
+
+using namespace epac;
+using namespace epac::driver;
+
+namespace {
+
+struct HostPacking {
+  std::vector<double> x, y, z, r;
+  int n() const { return static_cast<int>(r.size()); }
+};
+
+// n particles at uniformly random positions in a cube (overlaps allowed: detection must not
+// care), radii in [r0, r1]. Solid fraction ~0.3 gives ~3-4 candidate partners per particle.
+HostPacking random_packing(int n, double r0, double r1, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const double mean_r3 = r1 > r0 ? 0.25 * (r1 * r1 * r1 * r1 - r0 * r0 * r0 * r0) / (r1 - r0) : r0 * r0 * r0;
+  const double L = std::cbrt(n * 4.0 / 3.0 * M_PI * mean_r3 / 0.3);
+  HostPacking h;
+  for (int i = 0; i < n; ++i) {
+    h.x.push_back(L * u(rng));
+    h.y.push_back(L * u(rng));
+    h.z.push_back(L * u(rng));
+    h.r.push_back(r0 + (r1 - r0) * u(rng));
+  }
+  return h;
+}
+
+template <class D>
+Particles<double, D> to_device(const HostPacking& h) {
+  Particles<double, D> p(h.n());
+  auto x = Kokkos::create_mirror_view(p.x);
+  auto r = Kokkos::create_mirror_view(p.radius);
+  auto g = Kokkos::create_mirror_view(p.gid);
+  auto m = Kokkos::create_mirror_view(p.mass);
+  for (int i = 0; i < h.n(); ++i) {
+    x(i, 0) = h.x[i];
+    x(i, 1) = h.y[i];
+    x(i, 2) = h.z[i];
+    r(i) = h.r[i];
+    g(i) = 1000 + 3 * i;  // global ids need not equal indices
+    m(i) = 1.0;
+  }
+  Kokkos::deep_copy(p.x, x);
+  Kokkos::deep_copy(p.radius, r);
+  Kokkos::deep_copy(p.radius0, r);
+  Kokkos::deep_copy(p.gid, g);
+  Kokkos::deep_copy(p.mass, m);
+  return p;
+}
+
+std::set<std::pair<int, int>> brute_force_pairs(const HostPacking& h, double skin) {
+  std::set<std::pair<int, int>> s;
+  for (int i = 0; i < h.n(); ++i)
+    for (int j = i + 1; j < h.n(); ++j) {
+      const double dx = h.x[i] - h.x[j], dy = h.y[i] - h.y[j], dz = h.z[i] - h.z[j];
+      const double cut = h.r[i] + h.r[j] + skin;
+      if (dx * dx + dy * dy + dz * dz < cut * cut) s.insert({i, j});
+    }
+  return s;
+}
+
+template <class D>
+std::vector<std::pair<int, int>> list_pairs(const ContactList<D>& c) {
+  auto a = test::to_host(c.first);
+  auto b = test::to_host(c.second);
+  std::vector<std::pair<int, int>> v;
+  for (int k = 0; k < c.count; ++k) v.push_back({a(k), b(k)});
+  return v;
+}
+
+template <class D>
+Walls<double, D> box_walls(double L) {
+  // floor, ceiling and one tilted plane cutting through the packing
+  Walls<double, D> w(3);
+  auto pt = Kokkos::create_mirror_view(w.point);
+  auto nr = Kokkos::create_mirror_view(w.normal);
+  const double normals[3][3] = {{0, 0, 1}, {0, 0, -1}, {0.6, 0.0, 0.8}};
+  const double points[3][3] = {{0, 0, 0}, {0, 0, L}, {0.3 * L, 0, 0.3 * L}};
+  for (int k = 0; k < 3; ++k)
+    for (int d = 0; d < 3; ++d) {
+      pt(k, d) = points[k][d];
+      nr(k, d) = normals[k][d];
+    }
+  Kokkos::deep_copy(w.point, pt);
+  Kokkos::deep_copy(w.normal, nr);
+  return w;
+}
+
+// Device-side edits (in named functions: CUDA forbids device lambdas inside lambdas).
+template <class D>
+void shift_particle(const Particles<double, D>& p, int i, int d, double by) {
+  Kokkos::parallel_for(Kokkos::RangePolicy<typename D::execution_space>(0, 1), KOKKOS_LAMBDA(int) { p.x(i, d) += by; });
+}
+template <class D>
+void grow_particle(const Particles<double, D>& p, int i, double by) {
+  Kokkos::parallel_for(Kokkos::RangePolicy<typename D::execution_space>(0, 1), KOKKOS_LAMBDA(int) { p.radius(i) += by; });
+}
+template <class D>
+void shift_wall(const Walls<double, D>& w, int k, int d, double by) {
+  Kokkos::parallel_for(Kokkos::RangePolicy<typename D::execution_space>(0, 1), KOKKOS_LAMBDA(int) { w.point(k, d) += by; });
+}
+// Writes each contact's identity (global ids, or gid and -1 - wall) into its history row.
+template <class D>
+void tag_history(const ContactList<D>& c, const ContactHistory<double, D>& hist, const Particles<double, D>& pp,
+                 bool walls) {
+  auto d = hist.data;
+  Kokkos::parallel_for(Kokkos::RangePolicy<typename D::execution_space>(0, c.count), KOKKOS_LAMBDA(int k) {
+    d(k, 0) = double(pp.gid(c.first(k)));
+    d(k, 1) = walls ? -1.0 - c.second(k) : double(pp.gid(c.second(k)));
+    d(k, 2) = 0.5;
+  });
+}
+
+}  // namespace
+
+TEMPLATE_LIST_TEST_CASE("the cell list finds exactly the pairs of an O(N^2) search", "[driver][detection]",
+                        test::Backends) {
+  using D = TestType;
+  const double r0 = 0.8e-3, r1 = 1.2e-3;
+  HostPacking h = random_packing(3000, r0, r1, 11);
+  SECTION("a compact random packing") {}
+  SECTION("one particle far away (the grid widens its cells)") {
+    h.x[17] += 10.0;  // 10 m off: ~1e4 cells of 2.6 mm per axis without the cap
+  }
+  const double skin = 0.15 * r0;
+  const auto p = to_device<D>(h);
+  const CellList<double, D> cells = build_cell_list(p, 2.0 * r1 + skin);
+  CHECK(cells.ncells() <= 2 * h.n() + 64);
+  const ContactList<D> list = find_pairs(p, cells, skin);
+  const auto expected = brute_force_pairs(h, skin);
+  const auto got = list_pairs(list);
+  REQUIRE(expected.size() > 3000u);  // a test with few pairs would prove little
+  CHECK(got.size() == expected.size());
+  for (const auto& ij : got) CHECK(ij.first < ij.second);
+  const std::set<std::pair<int, int>> got_set(got.begin(), got.end());
+  CHECK(got_set.size() == got.size());  // no duplicates
+  CHECK(got_set == expected);
+  // ordered by first index: a deterministic list
+  CHECK(std::is_sorted(got.begin(), got.end(), [](auto a, auto b) { return a.first < b.first; }));
+}
+
+TEMPLATE_LIST_TEST_CASE("wall contacts are the particles within R + skin of each plane", "[driver][detection]",
+                        test::Backends) {
+  using D = TestType;
+  const HostPacking h = random_packing(2000, 0.8e-3, 1.2e-3, 5);
+  double L = 0;
+  for (double z : h.z) L = std::max(L, z);
+  const double skin = 1e-4;
+  const auto p = to_device<D>(h);
+  const auto w = box_walls<D>(L);
+  const ContactList<D> list = find_wall_contacts(p, w, skin);
+  auto pt = test::to_host(w.point);
+  auto nr = test::to_host(w.normal);
+  std::set<std::pair<int, int>> expected;
+  for (int i = 0; i < h.n(); ++i)
+    for (int k = 0; k < 3; ++k) {
+      const double dist = (h.x[i] - pt(k, 0)) * nr(k, 0) + (h.y[i] - pt(k, 1)) * nr(k, 1) + (h.z[i] - pt(k, 2)) * nr(k, 2);
+      if (dist < h.r[i] + skin) expected.insert({i, k});
+    }
+  const auto got = list_pairs(list);
+  REQUIRE(expected.size() > 100u);
+  CHECK(got.size() == expected.size());
+  CHECK(std::set<std::pair<int, int>>(got.begin(), got.end()) == expected);
+}
+
+TEMPLATE_LIST_TEST_CASE("the lists are rebuilt when the skin is used up", "[driver][detection]", test::Backends) {
+  using D = TestType;
+  const HostPacking h = random_packing(500, 1e-3, 1e-3, 3);
+  const double skin = 2e-4;
+  auto p = to_device<D>(h);
+  auto w = box_walls<D>(0.01);
+  ContactDetector<double, D> det(skin, 3, 3);
+  CHECK(det.needs_rebuild(p, w));  // never built
+  det.build(p, w);
+  CHECK_FALSE(det.needs_rebuild(p, w));
+  auto set_x = [&](int i, double dx) { shift_particle(p, i, 0, dx); };
+  set_x(7, 0.49 * skin);
+  CHECK_FALSE(det.needs_rebuild(p, w));  // within skin/2
+  set_x(7, 0.02 * skin);
+  CHECK(det.needs_rebuild(p, w));  // 0.51 skin
+  det.build(p, w);
+  CHECK_FALSE(det.needs_rebuild(p, w));
+  // a growing radius uses up the same margin (MDR)
+  grow_particle(p, 3, 0.3 * skin);
+  shift_particle(p, 3, 1, 0.25 * skin);
+  CHECK(det.needs_rebuild(p, w));
+  det.build(p, w);
+  // a wall moving along its normal, but not one sliding in its plane
+  shift_wall(w, 0, 0, 5 * skin);
+  CHECK_FALSE(det.needs_rebuild(p, w));
+  shift_wall(w, 0, 2, 0.6 * skin);
+  CHECK(det.needs_rebuild(p, w));
+  CHECK(det.builds == 3);
+}
+
+TEMPLATE_LIST_TEST_CASE("a rebuild and remap keeps the history of persisting contacts", "[driver][detection]",
+                        test::Backends) {
+  using D = TestType;
+  HostPacking h = random_packing(2000, 0.8e-3, 1.2e-3, 23);
+  const double skin = 1e-4;
+  auto p = to_device<D>(h);
+  auto w = box_walls<D>(0.02);
+  ContactDetector<double, D> det(skin, 3, 3);
+  det.build(p, w);
+  // Tag each contact's history with its own identity (global ids), as a model would store state.
+  tag_history(det.pairs, det.pair_history, p, false);
+  tag_history(det.walls, det.wall_history, p, true);
+  const auto old_pairs = list_pairs(det.pairs);
+  const auto old_walls = list_pairs(det.walls);
+
+  // Move every particle by up to 2 skins: many contacts persist, some vanish, some appear.
+  std::mt19937_64 rng(99);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int i = 0; i < h.n(); ++i) {
+    h.x[i] += 2 * skin * u(rng);
+    h.y[i] += 2 * skin * u(rng);
+    h.z[i] += 2 * skin * u(rng);
+  }
+  p = to_device<D>(h);
+  REQUIRE(det.needs_rebuild(p, w));
+  det.build(p, w);
+
+  auto check = [&](const ContactList<D>& c, const ContactHistory<double, D>& hist,
+                   const std::vector<std::pair<int, int>>& old, bool walls) {
+    const std::set<std::pair<int, int>> before(old.begin(), old.end());
+    const auto now = list_pairs(c);
+    auto d = test::to_host(hist.data);
+    REQUIRE(static_cast<int>(d.extent(0)) == c.count);
+    int kept = 0, fresh = 0, wrong = 0;
+    for (int k = 0; k < c.count; ++k) {
+      const int i = now[k].first, j = now[k].second;
+      if (before.count(now[k])) {
+        ++kept;
+        const double e1 = walls ? -1.0 - j : double(1000 + 3 * j);
+        if (d(k, 0) != double(1000 + 3 * i) || d(k, 1) != e1 || d(k, 2) != 0.5) ++wrong;
+      } else {
+        ++fresh;
+        if (d(k, 0) != 0.0 || d(k, 1) != 0.0 || d(k, 2) != 0.0) ++wrong;
+      }
+    }
+    INFO("kept " << kept << ", new " << fresh << ", old " << old.size());
+    CHECK(kept > 0);
+    CHECK(fresh > 0);
+    CHECK(kept < static_cast<int>(old.size()));  // some vanished
+    CHECK(wrong == 0);
+  };
+  check(det.pairs, det.pair_history, old_pairs, false);
+  check(det.walls, det.wall_history, old_walls, true);
+}
