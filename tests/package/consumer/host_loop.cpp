@@ -4,6 +4,8 @@
 
 #include <cstdio>
 
+void instantiate_all_models();  // all_models.cpp
+
 int main(int argc, char* argv[]) {
   Kokkos::ScopeGuard guard(argc, argv);
   using Model = epac::HertzMindlin<double, epac::Effects<epac::kFriction | epac::kDamping>>;
@@ -30,6 +32,7 @@ int main(int argc, char* argv[]) {
       for (int d = 0; d < 3; ++d) { p.v(i, d) += dt * p.force(i, d) / p.mass(i); p.x(i, d) += dt * p.v(i, d); }
     });
   }
+  instantiate_all_models();
   Kokkos::deep_copy(v, p.v);
   std::printf("velocity after impact: %.4f %.4f m/s\n", v(0, 0), v(1, 0));
   return (v(0, 0) < 0 && v(1, 0) > 0) ? 0 : 1;  // they bounced
