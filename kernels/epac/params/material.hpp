@@ -9,7 +9,7 @@
 namespace epac {
 
 struct Material {
-  std::string name = "material";
+  std::string name = "material";  // host
   double youngs_modulus = 0;   // E [Pa]
   double poisson_ratio = 0.3;  // nu, in (-1, 0.5)
   double density = 0;          // [kg/m^3]
@@ -23,7 +23,7 @@ struct Material {
 
   // Throws ParameterError naming the key, the value and the valid range.
   void validate() const {
-    const std::string p = "material '" + name + "': ";
+    const std::string p = "material '" + name + "': ";  // host
     if (!rigid) require_positive(p + "youngs_modulus", youngs_modulus);
     require_range(p + "poisson_ratio", poisson_ratio, -1.0, Bound::open, 0.5, Bound::open);
     if (!rigid) require_positive(p + "density", density);
@@ -47,7 +47,7 @@ struct PairProperties {
 inline PairProperties pair_properties(const Material& a, const Material& b) {
   auto cE = [](const Material& m) { return m.rigid ? 0.0 : (1 - m.poisson_ratio * m.poisson_ratio) / m.youngs_modulus; };
   auto cG = [](const Material& m) { return m.rigid ? 0.0 : (2 - m.poisson_ratio) / m.shear_modulus(); };
-  if (a.rigid && b.rigid) throw ParameterError("pair '" + a.name + "'-'" + b.name + "': two rigid bodies cannot be in contact");
+  if (a.rigid && b.rigid) throw ParameterError("pair '" + a.name + "'-'" + b.name + "': two rigid bodies cannot be in contact");  // host
   PairProperties p;
   p.E_star = 1.0 / (cE(a) + cE(b));
   p.G_star = 1.0 / (cG(a) + cG(b));

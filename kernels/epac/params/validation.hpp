@@ -17,7 +17,7 @@ class ParameterError : public std::invalid_argument {
 enum class Bound { open, closed };
 
 // Requires lo (<|<=) value (<|<=) hi and finite unless allow_inf. Throws ParameterError.
-inline void require_range(const std::string& name, double value, double lo, Bound lo_kind, double hi,
+inline void require_range(const std::string& name, double value, double lo, Bound lo_kind, double hi,  // host
                           Bound hi_kind, bool allow_inf = false) {
   const bool is_nan = std::isnan(value);
   const bool inf_ok = allow_inf && std::isinf(value) && value > 0;
@@ -32,11 +32,11 @@ inline void require_range(const std::string& name, double value, double lo, Boun
       << lo << ", ";
     if (std::isinf(hi)) s << "inf" << (allow_inf ? "]" : ")");
     else s << hi << (hi_kind == Bound::open ? ")" : "]");
-    throw ParameterError(s.str());
+    throw ParameterError(s.str());  // host
   }
 }
 
-inline void require_positive(const std::string& name, double value, bool allow_inf = false) {
+inline void require_positive(const std::string& name, double value, bool allow_inf = false) {  // host
   require_range(name, value, 0.0, Bound::open, std::numeric_limits<double>::infinity(), Bound::open,
                 allow_inf);
 }

@@ -18,7 +18,7 @@ struct ContactHistory {
   Kokkos::View<std::uint64_t*, Device> keys;
 
   ContactHistory() = default;
-  ContactHistory(int contacts, int nfields, const std::string& label = "history")
+  ContactHistory(int contacts, int nfields, const std::string& label = "history")  // host
       : fields(nfields),
         data(label + ".data", nfields > 0 ? contacts : 0, nfields),
         keys(label + ".keys", nfields > 0 ? contacts : 0) {}

@@ -15,7 +15,7 @@ struct ContactList {
   Kokkos::View<int*, Device> second;  // particle index j, or wall index for wall contacts
 
   ContactList() = default;
-  explicit ContactList(int capacity, const std::string& label = "contacts")
+  explicit ContactList(int capacity, const std::string& label = "contacts")  // host
       : count(capacity), first(label + ".first", capacity), second(label + ".second", capacity) {}
   int capacity() const { return static_cast<int>(first.extent(0)); }
 };

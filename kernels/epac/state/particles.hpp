@@ -24,7 +24,7 @@ struct Particles {
   Kokkos::View<std::int64_t*, Device> gid;  // global id: history keys and MDR side order
 
   Particles() = default;
-  explicit Particles(int count, const std::string& label = "particles")
+  explicit Particles(int count, const std::string& label = "particles")  // host
       : n(count),
         x(label + ".x", count), v(label + ".v", count), omega(label + ".omega", count),
         force(label + ".force", count), torque(label + ".torque", count),

@@ -15,7 +15,7 @@ struct Walls {
   Kokkos::View<int*, Device> material;
 
   Walls() = default;
-  explicit Walls(int count, const std::string& label = "walls")
+  explicit Walls(int count, const std::string& label = "walls")  // host
       : n(count), point(label + ".point", count), normal(label + ".normal", count),
         velocity(label + ".velocity", count), material(label + ".material", count) {}
 };
