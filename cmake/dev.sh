@@ -29,6 +29,9 @@ case "$cmd" in
   test)
     cmake --build "$build" -j "$jobs"
     cd "$build"
+    # ctest runs $jobs tests at once, each with $threads OpenMP threads: more threads than cores.
+    # Spinning OpenMP barriers then stall for whole scheduler slices; passive waiting does not.
+    export OMP_WAIT_POLICY="${OMP_WAIT_POLICY:-passive}"
     exec ctest --output-on-failure -j "$jobs" "$@"
     ;;
   bench)
