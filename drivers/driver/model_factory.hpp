@@ -16,9 +16,15 @@
 //       update_apparent_radius(m, p);  // R grows: ContactDetector counts the growth against the skin
 //     }
 //   };
+#include "driver/run_options.hpp"
 #include "driver/scene.hpp"
 
+#include <epac/models/contact_geometry.hpp>
+#include <epac/state/contact_history.hpp>
 #include <epac/state/particles.hpp>
+
+#include <string>
+#include <vector>
 
 namespace epac {
 namespace driver {
@@ -29,6 +35,10 @@ struct ModelFactoryBase {
   static constexpr int pair_history_fields = Model::history_size;
   static constexpr int wall_history_fields = Model::history_size;
 
+  // Called once, after the particles exist and before the first force pass (MDR: bind the
+  // apparent-radius state to the particles' radii).
+  template <class P>
+  static void bind(Model&, const P&) {}
   // Called before every force pass (after zero_forces), with the step's dt (0 for the first pass).
   template <class P, class T>
   static void before_forces(const Model&, const P&, T) {}
@@ -36,6 +46,23 @@ struct ModelFactoryBase {
   // section 4 step 4).
   template <class P, class T>
   static void after_forces(const Model&, const P&, T) {}
+  // Model-specific counters for the summary (printed and in summary.json under "model_counters"),
+  // e.g. MDR's guard hits. Called once after the last step.
+  static void report(const Model&, RunSummary&) {}
+
+  // Extra per-contact columns of contacts.csv ([run] contact_output) and their values for one
+  // contact, evaluated read-only right after the force pass (driver/contact_sampling.hpp).
+  static constexpr int contact_extra_count = 0;
+  static std::vector<std::string> contact_extra_names() { return {}; }
+  template <class T, class Device>
+  static KOKKOS_INLINE_FUNCTION void contact_extras(const Model&, const ContactGeometry<T>&,
+                                                    const HistoryRow<T, Device>&, T*) {}
+  // Per-particle volume for particles.csv ([run] particle_output; MDR (39)); empty: the file
+  // gets 4/3 pi R^3 of the current radius.
+  template <class T, class Device>
+  static Kokkos::View<T*, Device> particle_volume(const Model&) {
+    return {};
+  }
 };
 
 }  // namespace driver

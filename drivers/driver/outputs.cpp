@@ -36,6 +36,39 @@ void TimeseriesWriter::write(const Sample& s) {
   out_ << '\n';
 }
 
+ContactsWriter::ContactsWriter(const std::string& path, const std::vector<std::string>& extra_names,
+                               const std::vector<std::string>& wall_names)
+    : out_(path), walls_(wall_names) {
+  if (!out_) throw std::runtime_error("cannot write '" + path + "'");
+  out_ << "step,time,i,j,wall,wall_name,overlap,force";
+  for (const auto& n : extra_names) out_ << ',' << n;
+  out_ << '\n' << std::setprecision(10);
+}
+
+void ContactsWriter::write(std::int64_t step, double time, const ContactRows& r) {
+  const int ne = r.extra_count;
+  for (std::size_t k = 0; k < r.i.size(); ++k) {
+    out_ << step << ',' << time << ',' << r.i[k] << ',' << r.j[k] << ',' << r.wall[k] << ','
+         << (r.wall[k] >= 0 ? walls_[r.wall[k]] : std::string()) << ',' << r.overlap[k] << ',' << r.force[k];
+    for (int c = 0; c < ne; ++c) out_ << ',' << r.extras[k * ne + c];
+    out_ << '\n';
+  }
+}
+
+ParticlesWriter::ParticlesWriter(const std::string& path) : out_(path) {
+  if (!out_) throw std::runtime_error("cannot write '" + path + "'");
+  out_ << "step,time,id,x,y,z,R,R0,volume\n" << std::setprecision(10);
+}
+
+void ParticlesWriter::write(std::int64_t step, double time, const std::vector<double>& x,
+                            const std::vector<double>& y, const std::vector<double>& z,
+                            const std::vector<double>& R, const std::vector<double>& R0,
+                            const std::vector<double>& V) {
+  for (std::size_t k = 0; k < x.size(); ++k)
+    out_ << step << ',' << time << ',' << k << ',' << x[k] << ',' << y[k] << ',' << z[k] << ',' << R[k] << ','
+         << R0[k] << ',' << V[k] << '\n';
+}
+
 void write_summary_json(const std::string& path, const RunSummary& s) {
   nlohmann::json j;
   j["scene"] = s.scene;
@@ -58,6 +91,11 @@ void write_summary_json(const std::string& path, const RunSummary& s) {
   j["effects"] = s.effects;
   j["history_fields"] = s.history_fields;
   j["bytes_per_contact"] = s.bytes_per_contact;
+  if (!s.model_counters.empty()) {
+    nlohmann::json c = nlohmann::json::object();
+    for (const auto& kv : s.model_counters) c[kv.first] = kv.second;
+    j["model_counters"] = c;
+  }
   std::ofstream out(path);
   if (!out) throw std::runtime_error("cannot write '" + path + "'");
   out << j.dump(2) << '\n';

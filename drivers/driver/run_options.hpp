@@ -2,6 +2,7 @@
 // What the command line adds to a scene, and what a run reports (summary.json).
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace epac {
@@ -29,6 +30,8 @@ struct RunSummary {
   int history_fields = 0;
   std::size_t bytes_per_contact = 0;
   std::string timeseries_path, summary_path;
+  // Model-specific counters (ModelFactoryBase::report), e.g. MDR guard hits; in summary.json.
+  std::vector<std::pair<std::string, double>> model_counters;
 };
 
 }  // namespace driver

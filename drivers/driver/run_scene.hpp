@@ -2,6 +2,7 @@
 // One run of a scene with one compiled (model, effects, scalar) instance: device state, contact
 // detection with a skin, velocity-Verlet steps, outputs (design.md section 4).
 #include "driver/contact_detection.hpp"
+#include "driver/contact_sampling.hpp"
 #include "driver/diagnostics.hpp"
 #include "driver/effect_selection.hpp"
 #include "driver/integrator.hpp"
@@ -18,6 +19,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <type_traits>
 
 namespace epac {
@@ -141,6 +143,61 @@ class WallDriver {
   std::vector<Vec3d> pos_, at_build_;
 };
 
+// Driven particles with a motion (piecewise-constant velocity): the velocity of a step is the
+// exact displacement of the step over dt (as for walls), written to the device when it changes.
+template <class T, class Device>
+class DrivenMotion {
+ public:
+  explicit DrivenMotion(const Scene& s) : specs_(s.particles) {
+    for (std::size_t i = 0; i < specs_.size(); ++i)
+      if (specs_[i].driven && !specs_[i].motion.empty()) idx_.push_back(static_cast<int>(i));
+    const int n = static_cast<int>(idx_.size());
+    d_idx_ = Kokkos::View<int*, Device>("epac::driver::moved", n);
+    d_vel_ = Kokkos::View<T* [3], Kokkos::LayoutLeft, Device>("epac::driver::moved_velocity", n);
+    h_vel_ = Kokkos::create_mirror_view(d_vel_);
+    auto hi = Kokkos::create_mirror_view(d_idx_);
+    for (int k = 0; k < n; ++k) hi(k) = idx_[k];
+    Kokkos::deep_copy(d_idx_, hi);
+    last_.assign(n, Vec3d{0, 0, 0});
+  }
+  bool empty() const { return idx_.empty(); }
+
+  // Sets the driven velocities for the step [t0, t0 + dt].
+  void advance(const Particles<T, Device>& p, double t0, double dt) {
+    if (idx_.empty()) return;
+    bool changed = first_;
+    first_ = false;
+    for (std::size_t k = 0; k < idx_.size(); ++k) {
+      const Vec3d d = segments_displacement(specs_[idx_[k]].motion, t0, t0 + dt);
+      for (int c = 0; c < 3; ++c) {
+        const double v = d[c] / dt;
+        if (v != last_[k][c]) changed = true;
+        last_[k][c] = v;
+        h_vel_(k, c) = T(v);
+      }
+    }
+    if (!changed) return;
+    Kokkos::deep_copy(d_vel_, h_vel_);
+    const auto idx = d_idx_;
+    const auto vel = d_vel_;
+    const auto v = p.v;
+    Kokkos::parallel_for("epac::driver::driven_motion",
+                         Kokkos::RangePolicy<typename Device::execution_space>(0, static_cast<int>(idx_.size())),
+                         KOKKOS_LAMBDA(int k) {
+                           for (int c = 0; c < 3; ++c) v(idx(k), c) = vel(k, c);
+                         });
+  }
+
+ private:
+  const std::vector<ParticleSpec>& specs_;
+  std::vector<int> idx_;
+  Kokkos::View<int*, Device> d_idx_;
+  Kokkos::View<T* [3], Kokkos::LayoutLeft, Device> d_vel_;
+  typename Kokkos::View<T* [3], Kokkos::LayoutLeft, Device>::HostMirror h_vel_;
+  std::vector<Vec3d> last_;
+  bool first_ = true;
+};
+
 template <template <class, unsigned, class> class Factory, class T, unsigned Bits>
 RunSummary run_scene(const Scene& scene, const RunOptions& opt) {
   using Device = DefaultDevice;
@@ -151,7 +208,7 @@ RunSummary run_scene(const Scene& scene, const RunOptions& opt) {
   static_assert(Model::effects::bits == Bits, "the factory must build the model with the dispatched effects");
 
   const auto setup_start = clock::now();
-  const Model model = F::create(scene);  // host validation: throws before anything is written
+  Model model = F::create(scene);  // host validation: throws before anything is written
 
   RunSummary sum;
   sum.scene = scene.source;
@@ -190,9 +247,11 @@ RunSummary run_scene(const Scene& scene, const RunOptions& opt) {
 
   Kokkos::View<unsigned char*, Device> driven;
   Particles<T, Device> p = make_particles<T, Device>(scene, driven);
+  F::bind(model, p);
   const bool any_driven = scene.any_driven();
   Walls<T, Device> walls;
   WallDriver<T, Device> wall_driver(scene, walls);
+  DrivenMotion<T, Device> driven_motion(scene);
   const Vec3<T> g(T(scene.gravity[0]), T(scene.gravity[1]), T(scene.gravity[2]));
   const T dt = T(scene.run.dt);
   const T half_dt = T(0.5 * scene.run.dt);
@@ -213,14 +272,42 @@ RunSummary run_scene(const Scene& scene, const RunOptions& opt) {
     fit(pair_out, det.pairs.count, "pair_out");
     fit(wall_out, det.walls.count, "wall_out");
   };
+  std::vector<std::string> wall_names;
+  for (const auto& w : scene.walls) wall_names.push_back(w.name);
+  std::unique_ptr<ContactsWriter> contacts_csv;
+  std::unique_ptr<ParticlesWriter> particles_csv;
+  if (scene.run.contact_output)
+    contacts_csv = std::make_unique<ContactsWriter>(opt.out_dir + "/contacts.csv", F::contact_extra_names(), wall_names);
+  if (scene.run.particle_output) particles_csv = std::make_unique<ParticlesWriter>(opt.out_dir + "/particles.csv");
+
   // Forces are zeroed by kick_drift (and are zero on allocation before the first pass).
-  auto force_pass = [&](T step_dt, bool with_outputs) {
+  // `step`: the step whose forces these are (for contacts.csv).
+  auto force_pass = [&](T step_dt, bool with_outputs, std::int64_t step) {
     F::before_forces(model, p, step_dt);
     if (with_outputs) size_outputs();
     const ContactOutputs<T, Device> none{};
     compute_pair_forces(model, p, det.pairs, det.pair_history, step_dt, with_outputs ? pair_out : none);
     if (nw > 0) compute_wall_forces(model, p, walls, det.walls, det.wall_history, step_dt, with_outputs ? wall_out : none);
+    if (with_outputs && contacts_csv)  // before after_forces: the geometry the force pass saw
+      contacts_csv->write(step, step * scene.run.dt,
+                          collect_contacts<F>(model, p, walls, det.pairs, det.pair_history, det.walls,
+                                              det.wall_history, pair_out, wall_out));
     F::after_forces(model, p, step_dt);
+  };
+  auto write_particles = [&](std::int64_t step) {
+    auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.x);
+    auto R = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.radius);
+    auto R0 = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.radius0);
+    const auto vol = F::template particle_volume<T, Device>(model);
+    auto V = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), vol);
+    const int n = p.n;
+    std::vector<double> xs(n), ys(n), zs(n), Rs(n), R0s(n), Vs(n);
+    for (int i = 0; i < n; ++i) {
+      xs[i] = x(i, 0); ys[i] = x(i, 1); zs[i] = x(i, 2);
+      Rs[i] = R(i); R0s[i] = R0(i);
+      Vs[i] = static_cast<int>(V.extent(0)) == n ? double(V(i)) : 4.0 / 3.0 * M_PI * Rs[i] * Rs[i] * Rs[i];
+    }
+    particles_csv->write(step, step * scene.run.dt, xs, ys, zs, Rs, R0s, Vs);
   };
 
   TimeseriesWriter csv(sum.timeseries_path, [&] {
@@ -238,12 +325,13 @@ RunSummary run_scene(const Scene& scene, const RunOptions& opt) {
     s.wall_displacement.resize(nw);
     for (int k = 0; k < nw; ++k) s.wall_displacement[k] = wall_driver.normal_displacement(k);
     csv.write(s);
+    if (particles_csv) write_particles(step);
     active_sum += static_cast<double>(s.pair_contacts + s.wall_contacts);
     ++samples;
   };
 
   // First force pass with dt = 0: forces for the opening half kick; no tangential increment.
-  force_pass(T(0), true);
+  force_pass(T(0), true, 0);
   write_sample(0);
   Kokkos::fence();
   sum.setup_time_s = std::chrono::duration<double>(clock::now() - setup_start).count();
@@ -256,6 +344,7 @@ RunSummary run_scene(const Scene& scene, const RunOptions& opt) {
   const auto loop_start = clock::now();
   bool full_step_velocities = true;  // v is at a whole step (after a closing half kick)
   for (std::int64_t step = 1; step <= steps; ++step) {
+    driven_motion.advance(p, (step - 1) * scene.run.dt, scene.run.dt);
     // closing half kick of the previous step (if deferred) + opening half kick + drift
     const T shift = kick_drift(p, driven, g, full_step_velocities ? half_dt : dt, dt, det.reference_positions(),
                                det.reference_radii());
@@ -265,7 +354,7 @@ RunSummary run_scene(const Scene& scene, const RunOptions& opt) {
       wall_driver.mark_build();
     }
     const bool output = step % every == 0 || step == steps;
-    force_pass(dt, output);
+    force_pass(dt, output, step);
     full_step_velocities = output;
     if (output) {
       half_kick(p, driven, g, half_dt);  // closing half kick now: samples need whole-step velocities
@@ -286,8 +375,10 @@ RunSummary run_scene(const Scene& scene, const RunOptions& opt) {
     sum.contact_steps_per_second = list_steps / sum.wall_time_s;
     sum.active_contact_steps_per_second = sum.contacts_mean * steps / sum.wall_time_s;
   }
+  F::report(model, sum);
   write_summary_json(sum.summary_path, sum);
   if (info) {
+    for (const auto& kv : sum.model_counters) std::printf("%s = %.10g\n", kv.first.c_str(), kv.second);
     std::printf("%lld steps in %.3f s (setup %.3f s): %.3g contact-steps/s (list entries), %.1f contacts (mean, "
                 "active), %lld rebuilds\n",
                 static_cast<long long>(steps), sum.wall_time_s, sum.setup_time_s, sum.contact_steps_per_second,

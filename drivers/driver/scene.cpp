@@ -246,6 +246,21 @@ void parse_model(TableReader& top, Scene& s) {
   s.model.name = r.string("name").value_or("hertz_mindlin");
   const ModelEntry& entry = find_model(s.model.name);
   for (const auto& k : entry.keys) {
+    if (!k.choices.empty()) {  // a string from k.choices, stored as its index
+      std::string valid;
+      for (const auto& c : k.choices) valid += (valid.empty() ? "\"" : ", \"") + c + "\"";
+      double index = k.default_value;
+      if (const toml::node* n = r.get(k.name)) {
+        auto str = n->as_string();
+        if (!str) throw SceneError(r.key_path(k.name) + " must be a string (valid: " + valid + "), got " + type_name(*n) + line_of(*n));
+        auto it = std::find(k.choices.begin(), k.choices.end(), str->get());
+        if (it == k.choices.end())
+          throw SceneError(r.key_path(k.name) + " = \"" + str->get() + "\" is not valid (valid: " + valid + ")" + line_of(*n));
+        index = static_cast<double>(it - k.choices.begin());
+      }
+      s.model.params[k.name] = index;
+      continue;
+    }
     s.model.params[k.name] =
         r.number(k.name, k.lo, k.lo_kind, k.hi, k.hi_kind, k.has_default ? std::optional<double>(k.default_value) : std::nullopt);
   }
@@ -271,6 +286,26 @@ void parse_model(TableReader& top, Scene& s) {
   r.finish();
 }
 
+// `motion = [{duration, velocity}, ...]` of a wall or a driven particle; empty if absent.
+std::vector<MotionSegment> parse_motion(TableReader& r, const std::string& path, const toml::node& n) {
+  std::vector<MotionSegment> out;
+  const toml::array* motion = r.array("motion");
+  if (!motion) return out;
+  for (std::size_t m = 0; m < motion->size(); ++m) {
+    const std::string mp = path + ".motion[" + std::to_string(m) + "]";
+    const toml::node& mn = *motion->get(m);
+    if (!mn.is_table()) throw SceneError(mp + " must be a table {duration = .., velocity = [..]}, got " + type_name(mn) + line_of(mn));
+    TableReader sr(*mn.as_table(), mp);
+    MotionSegment seg;
+    seg.duration = sr.number("duration", 0.0, Bound::open, kInf, Bound::open, std::nullopt);
+    seg.velocity = sr.vec3("velocity", std::nullopt);
+    sr.finish();
+    out.push_back(seg);
+  }
+  if (out.empty()) throw SceneError(path + ".motion is empty (give at least one {duration, velocity})" + line_of(n));
+  return out;
+}
+
 ParticleSpec parse_particle(const toml::table& t, const std::string& path, const Scene& s) {
   TableReader r(t, path);
   ParticleSpec p;
@@ -278,9 +313,16 @@ ParticleSpec parse_particle(const toml::table& t, const std::string& path, const
   p.position = r.vec3("position", std::nullopt);
   p.radius = r.number("radius", 0.0, Bound::open, kInf, Bound::open, std::nullopt);
   p.material = material_of(r, "material", s);
+  const bool has_velocity = r.has("velocity");
   p.velocity = r.vec3("velocity", Vec3d{0, 0, 0});
   p.angular_velocity = r.vec3("angular_velocity", Vec3d{0, 0, 0});
   p.driven = r.boolean("driven", false);
+  p.motion = parse_motion(r, path, t);
+  if (!p.motion.empty()) {
+    if (!p.driven) throw SceneError(path + ".motion needs driven = true (a prescribed displacement)" + line_of(t));
+    if (has_velocity) throw SceneError(path + ": give either velocity or motion, not both" + line_of(t));
+    p.velocity = p.motion.front().velocity;
+  }
   r.finish();
   return p;
 }
@@ -338,21 +380,9 @@ void parse_walls(TableReader& top, Scene& s) {
     w.material = material_of(r, "material", s);
     const bool has_velocity = r.has("velocity");
     w.velocity = r.vec3("velocity", Vec3d{0, 0, 0});
-    if (const toml::array* motion = r.array("motion")) {
-      if (has_velocity) throw SceneError(path + ": give either velocity or motion, not both" + line_of(n));
-      for (std::size_t m = 0; m < motion->size(); ++m) {
-        const std::string mp = path + ".motion[" + std::to_string(m) + "]";
-        const toml::node& mn = *motion->get(m);
-        if (!mn.is_table()) throw SceneError(mp + " must be a table {duration = .., velocity = [..]}, got " + type_name(mn) + line_of(mn));
-        TableReader sr(*mn.as_table(), mp);
-        MotionSegment seg;
-        seg.duration = sr.number("duration", 0.0, Bound::open, kInf, Bound::open, std::nullopt);
-        seg.velocity = sr.vec3("velocity", std::nullopt);
-        sr.finish();
-        w.segments.push_back(seg);
-      }
-      if (w.segments.empty()) throw SceneError(path + ".motion is empty (give at least one {duration, velocity})" + line_of(n));
-    }
+    w.segments = parse_motion(r, path, n);
+    if (!w.segments.empty() && has_velocity)
+      throw SceneError(path + ": give either velocity or motion, not both" + line_of(n));
     r.finish();
     s.walls.push_back(w);
   }
@@ -366,6 +396,8 @@ void parse_run(TableReader& top, Scene& s) {
   s.run.steps = r.integer("steps", 0, 1000000000000LL, std::nullopt);
   s.run.output_interval = r.integer("output_interval", 1, 1000000000000LL, std::int64_t(0));
   s.run.skin = r.number("skin", 0.0, Bound::closed, kInf, Bound::open, -1.0);
+  s.run.contact_output = r.boolean("contact_output", false);
+  s.run.particle_output = r.boolean("particle_output", false);
   r.finish();
 }
 
@@ -400,17 +432,46 @@ void finish_scene(Scene& s) {
   if (s.particles.empty()) throw SceneError("particles: no particles (particles.fill.count = 0 and no list)");
 
   if (s.run.output_interval == 0) s.run.output_interval = std::max<std::int64_t>(1, s.run.steps / 100);
-  if (s.run.skin < 0) s.run.skin = 0.2 * s.min_radius();
 
   const ModelEntry& entry = find_model(s.model.name);
   s.model.derived_effects = derive_effects(s.materials, std::vector<int>(pm.begin(), pm.end()),
                                            std::vector<int>(wm.begin(), wm.end()));
   if (!s.model.effects_overridden) {
-    s.model.effects = (s.model.derived_effects | entry.implied_effects) & entry.supported_effects;
+    unsigned bits = s.model.derived_effects | entry.implied_effects;
+    if (bits & kPlasticity) bits |= entry.implied_with_plasticity;
+    s.model.effects = bits & entry.supported_effects;
     const unsigned ignored = s.model.derived_effects & ~entry.supported_effects;
     if (ignored)
       s.model.notes.push_back("the materials call for " + effect_names(ignored) + ", which model " + entry.name +
                               " does not implement: ignored");
+  }
+
+  // The model's own check (options against materials and effects) and its adhesive range: the
+  // largest separation at which a contact stays active. The skin must exceed it, or an adhesive
+  // contact at negative overlap would drop out of the list at the next rebuild.
+  double range = 0.0;
+  if (entry.scene_check) {
+    try {
+      range = entry.scene_check(s);
+    } catch (const SceneError&) {
+      throw;
+    } catch (const ParameterError& e) {
+      throw SceneError(std::string("[model] ") + e.what());
+    }
+  }
+  const double default_skin = 0.2 * s.min_radius();
+  if (s.run.skin < 0) {
+    s.run.skin = std::max(default_skin, 1.25 * range);
+    if (s.run.skin > default_skin)
+      s.model.notes.push_back("skin raised to 1.25 x the adhesive range of model " + entry.name + " (" +
+                              std::to_string(range) + " m)");
+  } else if (range > 0.0 && !(s.run.skin > range)) {
+    std::ostringstream m;
+    m << "run.skin = " << s.run.skin << " is not larger than the adhesive range " << range << " m of model "
+      << entry.name << " (the largest separation at which an adhesive contact stays active): such contacts "
+      << "would drop out of the contact list; give run.skin > " << range << " or leave it out (default "
+      << "max(0.2 x the smallest radius, 1.25 x the adhesive range))";
+    throw SceneError(m.str());
   }
 }
 
@@ -439,11 +500,16 @@ Scene parse_table(const toml::table& root, const std::string& source) {
 }  // namespace
 
 Vec3d WallSpec::displacement(double t0, double t1) const {
-  Vec3d d{0, 0, 0};
   if (segments.empty()) {
+    Vec3d d{0, 0, 0};
     for (int k = 0; k < 3; ++k) d[k] = velocity[k] * (t1 - t0);
     return d;
   }
+  return segments_displacement(segments, t0, t1);
+}
+
+Vec3d segments_displacement(const std::vector<MotionSegment>& segments, double t0, double t1) {
+  Vec3d d{0, 0, 0};
   double start = 0.0;
   for (const auto& seg : segments) {
     const double end = start + seg.duration;

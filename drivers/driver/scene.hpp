@@ -22,6 +22,16 @@ class SceneError : public ParameterError {
   using ParameterError::ParameterError;
 };
 
+// One piece of a piecewise-constant velocity (prescribed displacement of a wall or a driven
+// particle).
+struct MotionSegment {
+  double duration = 0;  // [s]
+  Vec3d velocity{0, 0, 0};
+};
+
+// Displacement over [t0, t1] of segments run in order from t = 0 (still after the last one).
+Vec3d segments_displacement(const std::vector<MotionSegment>& segments, double t0, double t1);
+
 struct ParticleSpec {
   Vec3d position{0, 0, 0};
   Vec3d velocity{0, 0, 0};
@@ -29,13 +39,10 @@ struct ParticleSpec {
   double radius = 0;
   int material = 0;
   bool driven = false;  // velocity prescribed (not integrated): a sphere under prescribed displacement
+  // Driven particles only: piecewise-constant velocity (then `velocity` is not given); still
+  // after the last segment. Empty: the constant `velocity`.
+  std::vector<MotionSegment> motion;
   std::string origin;   // "particles.list[3]" or "particles.fill": for messages
-};
-
-// One piece of a piecewise-constant wall velocity (prescribed displacement).
-struct MotionSegment {
-  double duration = 0;  // [s]
-  Vec3d velocity{0, 0, 0};
 };
 
 struct WallSpec {
@@ -75,7 +82,9 @@ struct RunSpec {
   double dt = 0;
   std::int64_t steps = 0;
   std::int64_t output_interval = 0;  // 0: steps / 100 (at least 1)
-  double skin = -1;                  // < 0: 0.2 x the smallest radius
+  double skin = -1;                  // < 0: 0.2 x the smallest radius (see finish_scene)
+  bool contact_output = false;       // contacts.csv at every output step
+  bool particle_output = false;      // particles.csv at every output step
 };
 
 struct Scene {

@@ -1,0 +1,63 @@
+#pragma once
+// Helpers of the driver tests: a fresh output folder, timeseries CSVs by column, a scene run.
+#include "driver/model_registry.hpp"
+#include "driver/scene.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+#include <unistd.h>
+
+namespace epac {
+namespace test {
+
+inline std::filesystem::path fresh_out_dir(const std::string& tag) {
+  static int counter = 0;
+  return std::filesystem::temp_directory_path() /
+         ("epac-driver-" + std::to_string(getpid()) + "-" + tag + "-" + std::to_string(counter++));
+}
+
+// A CSV with a header line, as columns by name (numbers only).
+inline std::map<std::string, std::vector<double>> read_csv_columns(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::string> names;
+  {
+    std::stringstream s(line);
+    std::string c;
+    while (std::getline(s, c, ',')) names.push_back(c);
+  }
+  std::map<std::string, std::vector<double>> cols;
+  for (const auto& n : names) cols[n];
+  while (std::getline(in, line)) {
+    std::stringstream s(line);
+    std::string c;
+    for (const auto& n : names) {
+      std::getline(s, c, ',');
+      cols[n].push_back(std::stod(c));
+    }
+  }
+  return cols;
+}
+
+inline driver::RunSummary run_scene_text(const std::string& text, const std::filesystem::path& dir,
+                                         const std::string& precision = "double") {
+  driver::RunOptions opt;
+  opt.out_dir = dir.string();
+  opt.quiet = true;
+  opt.precision = precision;
+  return driver::run(driver::parse_scene_string(text, "test.toml"), opt);
+}
+
+inline double counter_of(const driver::RunSummary& s, const std::string& name) {
+  for (const auto& kv : s.model_counters)
+    if (kv.first == name) return kv.second;
+  return -1.0;
+}
+
+}  // namespace test
+}  // namespace epac
