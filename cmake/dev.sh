@@ -14,9 +14,10 @@ threads="${EPAC_THREADS:-${OMP_NUM_THREADS:-$(nproc)}}"
 export OMP_NUM_THREADS="$threads" OMP_PROC_BIND="${OMP_PROC_BIND:-false}"
 
 bash "$root/cmake/install-deps.sh"
+mkdir -p "$build"
 # shellcheck disable=SC2086
-cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release ${EPAC_CMAKE_ARGS:-} > "$build.configure.log" 2>&1 \
-  || { cat "$build.configure.log"; exit 1; }
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release ${EPAC_CMAKE_ARGS:-} > "$build/epac-configure.log" 2>&1 \
+  || { cat "$build/epac-configure.log"; exit 1; }
 jobs=$(nproc)
 
 case "$cmd" in

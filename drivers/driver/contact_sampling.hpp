@@ -22,40 +22,7 @@
 namespace epac {
 namespace driver {
 
-// The geometry of pair contact (i, j) and of wall contact (i, wall wl) as compute_pair_forces /
-// compute_wall_forces build it (compute/contact_forces.hpp; velocities and dt are not needed for
-// outputs and are left zero). Keep in step with that file.
-template <class T, class Device>
-KOKKOS_INLINE_FUNCTION ContactGeometry<T> pair_geometry(const Particles<T, Device>& p, int i, int j, int nmat) {
-  const Vec3<T> d = load3(p.x, i) - load3(p.x, j);
-  const T dist = norm(d);
-  ContactGeometry<T> g;
-  g.i = i; g.j = j;
-  g.pair = p.material(i) * nmat + p.material(j);
-  g.R_i = p.radius(i); g.R_j = p.radius(j);
-  g.n = dist > T(0) ? (T(1) / dist) * d : Vec3<T>(T(1), T(0), T(0));
-  g.delta = g.R_i + g.R_j - dist;
-  g.R_eff = g.R_i * g.R_j / (g.R_i + g.R_j);
-  const T mi = p.mass(i), mj = p.mass(j);
-  g.m_eff = mi * mj / (mi + mj);
-  g.i_is_first = p.gid(i) < p.gid(j);
-  return g;
-}
-
-template <class T, class Device>
-KOKKOS_INLINE_FUNCTION ContactGeometry<T> wall_geometry(const Particles<T, Device>& p, const Walls<T, Device>& w,
-                                                        int i, int wl, int nmat) {
-  ContactGeometry<T> g;
-  g.i = i; g.j = -1; g.wall = wl;
-  g.pair = p.material(i) * nmat + w.material(wl);
-  g.n = load3(w.normal, wl);
-  const T dist = dot(load3(p.x, i) - load3(w.point, wl), g.n);
-  g.R_i = p.radius(i); g.R_j = T(0);
-  g.delta = g.R_i - dist;
-  g.R_eff = g.R_i;
-  g.m_eff = p.mass(i);
-  return g;
-}
+// pair_geometry / wall_geometry: kernels/epac/compute/contact_forces.hpp (the kernels' own).
 
 // Collects the contacts of one force pass that interact (overlap > 0 or a nonzero force, e.g.
 // adhesion at a gap) with the factory's extra columns.

@@ -33,6 +33,43 @@ struct ContactForceBuffer {
   KOKKOS_INLINE_FUNCTION bool enabled() const { return force.extent(0) > 0; }
 };
 
+
+// The geometry of pair contact (i, j) and of wall contact (i, wall wl), as the kernels below see
+// it (velocity terms and dt are filled by the kernels). Public so that outputs computed outside
+// a force pass (the driver's per-contact samples) see exactly the same contact.
+template <class T, class Device>
+KOKKOS_INLINE_FUNCTION ContactGeometry<T> pair_geometry(const Particles<T, Device>& p, int i, int j, int nmat) {
+  const Vec3<T> d = load3(p.x, i) - load3(p.x, j);
+  const T dist = norm(d);
+  ContactGeometry<T> g;
+  g.i = i; g.j = j;
+  g.pair = p.material(i) * nmat + p.material(j);
+  g.R_i = p.radius(i); g.R_j = p.radius(j);
+  // Coincident centres have no normal; pick x so the law still sees the overlap.
+  g.n = dist > T(0) ? (T(1) / dist) * d : Vec3<T>(T(1), T(0), T(0));
+  g.delta = g.R_i + g.R_j - dist;
+  g.R_eff = g.R_i * g.R_j / (g.R_i + g.R_j);
+  const T mi = p.mass(i), mj = p.mass(j);
+  g.m_eff = mi * mj / (mi + mj);
+  g.i_is_first = p.gid(i) < p.gid(j);
+  return g;
+}
+
+template <class T, class Device>
+KOKKOS_INLINE_FUNCTION ContactGeometry<T> wall_geometry(const Particles<T, Device>& p, const Walls<T, Device>& w,
+                                                        int i, int wl, int nmat) {
+  ContactGeometry<T> g;
+  g.i = i; g.j = -1; g.wall = wl;
+  g.pair = p.material(i) * nmat + w.material(wl);
+  g.n = load3(w.normal, wl);
+  const T dist = dot(load3(p.x, i) - load3(w.point, wl), g.n);
+  g.R_i = p.radius(i); g.R_j = T(0);
+  g.delta = g.R_i - dist;
+  g.R_eff = g.R_i;
+  g.m_eff = p.mass(i);
+  return g;
+}
+
 namespace detail {
 
 // Shared tail of pair and wall contacts: damping, friction, accumulation.
@@ -98,19 +135,8 @@ void compute_pair_forces(const Model& model, const Particles<T, Device>& p, cons
   Kokkos::parallel_for(
       "epac::compute_pair_forces", Kokkos::RangePolicy<exec>(0, c.count), KOKKOS_LAMBDA(int k) {
         const int i = c.first(k), j = c.second(k);
-        const Vec3<T> d = load3(p.x, i) - load3(p.x, j);
-        const T dist = norm(d);
-        ContactGeometry<T> g;
-        g.i = i; g.j = j; g.dt = dt;
-        g.pair = p.material(i) * nmat + p.material(j);
-        g.R_i = p.radius(i); g.R_j = p.radius(j);
-        // Coincident centres have no normal; pick x so the law still sees the overlap.
-        g.n = dist > T(0) ? (T(1) / dist) * d : Vec3<T>(T(1), T(0), T(0));
-        g.delta = g.R_i + g.R_j - dist;
-        g.R_eff = g.R_i * g.R_j / (g.R_i + g.R_j);
-        const T mi = p.mass(i), mj = p.mass(j);
-        g.m_eff = mi * mj / (mi + mj);
-        g.i_is_first = p.gid(i) < p.gid(j);
+        ContactGeometry<T> g = pair_geometry(p, i, j, nmat);
+        g.dt = dt;
         // branch vectors to the contact point (middle of the overlap zone)
         const Vec3<T> r_i = T(-1) * (g.R_i - T(0.5) * g.delta) * g.n;
         const Vec3<T> r_j = (g.R_j - T(0.5) * g.delta) * g.n;
@@ -132,15 +158,8 @@ void compute_wall_forces(const Model& model, const Particles<T, Device>& p, cons
   Kokkos::parallel_for(
       "epac::compute_wall_forces", Kokkos::RangePolicy<exec>(0, c.count), KOKKOS_LAMBDA(int k) {
         const int i = c.first(k), wl = c.second(k);
-        ContactGeometry<T> g;
-        g.i = i; g.j = -1; g.wall = wl; g.dt = dt;
-        g.pair = p.material(i) * nmat + w.material(wl);
-        g.n = load3(w.normal, wl);
-        const T dist = dot(load3(p.x, i) - load3(w.point, wl), g.n);
-        g.R_i = p.radius(i); g.R_j = T(0);
-        g.delta = g.R_i - dist;
-        g.R_eff = g.R_i;
-        g.m_eff = p.mass(i);
+        ContactGeometry<T> g = wall_geometry(p, w, i, wl, nmat);
+        g.dt = dt;
         const Vec3<T> r_i = T(-1) * (g.R_i - g.delta) * g.n;  // contact point on the plane
         const Vec3<T> v_c = load3(p.v, i) + cross(load3(p.omega, i), r_i) - load3(w.velocity, wl);
         g.delta_dot = -dot(v_c, g.n);
