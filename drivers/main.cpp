@@ -6,29 +6,13 @@
 
 #include <CLI/CLI.hpp>
 #include <Kokkos_Core.hpp>
+#include <epac/core/kokkos_compat.hpp>
 
 #include <cstdio>
 #include <exception>
 #include <memory>
 #include <unistd.h>
 
-namespace {
-
-// Kokkos::ScopeGuard with a thread count (<= 0: Kokkos's default, i.e. OMP_NUM_THREADS for
-// OpenMP). InitArguments became InitializationSettings in Kokkos 3.7.
-std::unique_ptr<Kokkos::ScopeGuard> start_kokkos(int threads) {
-#if KOKKOS_VERSION >= 30700
-  Kokkos::InitializationSettings settings;
-  if (threads > 0) settings.set_num_threads(threads);
-  return std::make_unique<Kokkos::ScopeGuard>(settings);
-#else
-  Kokkos::InitArguments args;
-  if (threads > 0) args.num_threads = threads;
-  return std::make_unique<Kokkos::ScopeGuard>(args);
-#endif
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"epac-run: run a DEM scene with the epac contact kernels"};
@@ -53,7 +37,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "epac-run: invalid scene: %s\n", e.what());
     return 2;
   }
-  auto kokkos = start_kokkos(threads);
+  auto kokkos = epac::start_kokkos(threads);
   try {
     epac::driver::run(scene, opt);
   } catch (const epac::ParameterError& e) {

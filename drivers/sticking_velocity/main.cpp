@@ -12,23 +12,13 @@
 #include <nlohmann/json.hpp>
 
 #include <cstdio>
+#include <epac/core/kokkos_compat.hpp>
+
 #include <exception>
 #include <fstream>
 #include <memory>
 
 namespace {
-
-std::unique_ptr<Kokkos::ScopeGuard> start_kokkos(int threads) {
-#if KOKKOS_VERSION >= 30700
-  Kokkos::InitializationSettings settings;
-  if (threads > 0) settings.set_num_threads(threads);
-  return std::make_unique<Kokkos::ScopeGuard>(settings);
-#else
-  Kokkos::InitArguments args;
-  if (threads > 0) args.num_threads = threads;
-  return std::make_unique<Kokkos::ScopeGuard>(args);
-#endif
-}
 
 const char* outcome_name(epac::sticking::Outcome o) {
   return o == epac::sticking::Outcome::stick ? "stick" : "rebound";
@@ -71,7 +61,7 @@ int main(int argc, char** argv) {
     return 2;
   }
 
-  auto kokkos = start_kokkos(threads);
+  auto kokkos = epac::start_kokkos(threads);
   StickingSearch r;
   try {
     epac::driver::make_output_dir(out_dir);

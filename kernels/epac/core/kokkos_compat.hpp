@@ -5,6 +5,7 @@
 #include <Kokkos_Core.hpp>
 
 #include <cstdint>
+#include <memory>
 #include <type_traits>
 
 #if KOKKOS_VERSION >= 30700
@@ -76,6 +77,20 @@ struct constants {
 // Host mirror type, spelled the same way on every Kokkos version.
 template <class View>
 using host_mirror_t = decltype(Kokkos::create_mirror_view(std::declval<View>()));
+
+// Host: Kokkos::ScopeGuard with a thread count (<= 0: Kokkos's default, i.e. OMP_NUM_THREADS for
+// OpenMP). InitArguments became InitializationSettings in Kokkos 3.7.
+inline std::unique_ptr<Kokkos::ScopeGuard> start_kokkos(int threads) {  // host
+#if KOKKOS_VERSION >= 30700
+  Kokkos::InitializationSettings settings;
+  if (threads > 0) settings.set_num_threads(threads);
+  return std::make_unique<Kokkos::ScopeGuard>(settings);  // host
+#else
+  Kokkos::InitArguments args;
+  if (threads > 0) args.num_threads = threads;
+  return std::make_unique<Kokkos::ScopeGuard>(args);  // host
+#endif
+}
 
 // Default device for epac containers.
 using DefaultDevice = Kokkos::Device<Kokkos::DefaultExecutionSpace,
