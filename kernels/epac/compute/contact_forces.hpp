@@ -1,8 +1,10 @@
 #pragma once
 // The contact kernel (design.md section 4, step 3): one thread per contact computes geometry,
-// the model's normal law, damping and the tangential spring, then atomically adds force and
-// torque into both particles. Model is any law with the interface of models/hertz_mindlin.hpp;
+// the model's normal law, damping and the tangential spring, then adds force and torque into
+// both particles through ForceSums (compute/particle_sums.hpp: per-thread copies on CPUs,
+// atomics on GPUs). Model is any law with the interface of models/hertz_mindlin.hpp;
 // its Effects set decides at compile time what is computed and which history exists.
+#include <epac/compute/particle_sums.hpp>
 #include <epac/core/vec3.hpp>
 #include <epac/models/contact_geometry.hpp>
 #include <epac/models/tangential_spring.hpp>
@@ -10,6 +12,8 @@
 #include <epac/state/contact_list.hpp>
 #include <epac/state/particles.hpp>
 #include <epac/state/walls.hpp>
+
+#include <type_traits>
 
 namespace epac {
 
@@ -34,30 +38,47 @@ struct ContactForceBuffer {
 };
 
 
+namespace detail {
+// Models whose sides are ordered by global id (MDR) declare `uses_side_order = true`; the
+// others never load the 64-bit ids.
+template <class M, class = void>
+struct uses_side_order : std::false_type {};
+template <class M>
+struct uses_side_order<M, std::void_t<decltype(M::uses_side_order)>> : std::integral_constant<bool, M::uses_side_order> {};
+}  // namespace detail
+
+// Index into a model's pair table; one material needs no material loads.
+template <class T, class Device>
+KOKKOS_FORCEINLINE_FUNCTION int pair_table_index(const Particles<T, Device>& p, int i, int j, int nmat) {
+  return nmat == 1 ? 0 : p.material(i) * nmat + p.material(j);
+}
+
 // The geometry of pair contact (i, j) and of wall contact (i, wall wl), as the kernels below see
 // it (velocity terms and dt are filled by the kernels). Public so that outputs computed outside
-// a force pass (the driver's per-contact samples) see exactly the same contact.
-template <class T, class Device>
-KOKKOS_INLINE_FUNCTION ContactGeometry<T> pair_geometry(const Particles<T, Device>& p, int i, int j, int nmat) {
-  const Vec3<T> d = load3(p.x, i) - load3(p.x, j);
+// a force pass (the driver's per-contact samples) see exactly the same contact. Periodic axes of
+// p.box use the minimum image.
+template <class T, class Device, bool SideOrder = true>
+KOKKOS_FORCEINLINE_FUNCTION ContactGeometry<T> pair_geometry(const Particles<T, Device>& p, int i, int j, int nmat) {
+  Vec3<T> d = load3(p.x, i) - load3(p.x, j);
+  if (p.box.periodic()) d = p.box.minimum_image(d);
   const T dist = norm(d);
   ContactGeometry<T> g;
   g.i = i; g.j = j;
-  g.pair = p.material(i) * nmat + p.material(j);
+  g.pair = pair_table_index(p, i, j, nmat);
   g.R_i = p.radius(i); g.R_j = p.radius(j);
   // Coincident centres have no normal; pick x so the law still sees the overlap.
   g.n = dist > T(0) ? (T(1) / dist) * d : Vec3<T>(T(1), T(0), T(0));
   g.delta = g.R_i + g.R_j - dist;
-  g.R_eff = g.R_i * g.R_j / (g.R_i + g.R_j);
+  g.R_eff = g.R_i * g.R_j / (g.R_i + g.R_j);  // radii > 0 (host validation)
   const T mi = p.mass(i), mj = p.mass(j);
-  g.m_eff = mi * mj / (mi + mj);
-  g.i_is_first = p.gid(i) < p.gid(j);
+  g.m_eff = mi * mj / (mi + mj);              // masses > 0 (host validation)
+  if (SideOrder) g.i_is_first = p.gid(i) < p.gid(j);
   return g;
 }
 
 template <class T, class Device>
-KOKKOS_INLINE_FUNCTION ContactGeometry<T> wall_geometry(const Particles<T, Device>& p, const Walls<T, Device>& w,
-                                                        int i, int wl, int nmat) {
+KOKKOS_FORCEINLINE_FUNCTION ContactGeometry<T> wall_geometry(const Particles<T, Device>& p, const Walls<T, Device>& w,
+                                                             int i, int wl, int nmat) {
   ContactGeometry<T> g;
   g.i = i; g.j = -1; g.wall = wl;
   g.pair = p.material(i) * nmat + w.material(wl);
@@ -72,15 +93,24 @@ KOKKOS_INLINE_FUNCTION ContactGeometry<T> wall_geometry(const Particles<T, Devic
 
 namespace detail {
 
-// Shared tail of pair and wall contacts: damping, friction, accumulation.
-template <class Model, class T, class Device>
-KOKKOS_INLINE_FUNCTION void finish_contact(const Model& model, const Particles<T, Device>& p,
-                                           const ContactGeometry<T>& g, const Vec3<T>& v_c,
-                                           const Vec3<T>& r_i, const Vec3<T>& r_j,
-                                           const HistoryRow<T, Device>& row,
-                                           const ContactOutputs<T, Device>& out,
-                                           const ContactForceBuffer<T, Device>& buf, int k) {
+// Shared tail of pair and wall contacts: the law, damping, friction, accumulation.
+// arm_i, arm_j: distances from the centres to the contact point along n (r_i = -arm_i n,
+// r_j = arm_j n), so the contact-point velocity and both torques need one cross product each.
+// fa, ta: ScatterView access objects of the force and torque sums.
+template <bool IsPair, class Model, class T, class Device, class FAccess, class TAccess>
+KOKKOS_FORCEINLINE_FUNCTION void finish_contact(const Model& model, const Particles<T, Device>& p,
+                                                ContactGeometry<T>& g, const Vec3<T>& v_rel, T arm_i, T arm_j,
+                                                const HistoryRow<T, Device>& row,
+                                                const ContactOutputs<T, Device>& out,
+                                                const ContactForceBuffer<T, Device>& buf, int k,
+                                                const FAccess& fa, const TAccess& ta) {
   using Eff = typename Model::effects;
+  // contact-point velocity of i relative to j: v_i - v_j + w_i x r_i - w_j x r_j
+  Vec3<T> w_arm = arm_i * load3(p.omega, g.i);
+  if (IsPair) w_arm += arm_j * load3(p.omega, g.j);
+  const Vec3<T> v_c = v_rel - cross(w_arm, g.n);
+  const T vn = dot(v_c, g.n);
+  g.delta_dot = -vn;
   const NormalForce<T> nf = model.normal(g, row);
   const auto trow = row.shifted(Model::normal_history_size);
   if (!nf.active) {
@@ -99,23 +129,25 @@ KOKKOS_INLINE_FUNCTION void finish_contact(const Model& model, const Particles<T
     else if (fn > T(0)) fn = math::max(fn + fd, T(0));  // damping never turns a push into a pull
   }
   Vec3<T> F = fn * g.n;
-  Vec3<T> ft;
+  Vec3<T> nxft;  // n x F_t: the torques are -arm_i (n x F_t) on i and -arm_j (n x F_t) on j
   if (Eff::friction) {
-    const Vec3<T> v_t = v_c - dot(v_c, g.n) * g.n;
-    ft = tangential_spring_force(nf, g.n, v_t, g.m_eff, g.dt, trow);
+    const Vec3<T> v_t = v_c - vn * g.n;
+    const T damp_t = Eff::damping ? nf.damping_t * math::sqrt_nonneg(g.m_eff * nf.k_t) : T(0);
+    const Vec3<T> ft = tangential_spring_force(nf, g.n, v_t, damp_t, g.dt, trow);
     F += ft;
+    nxft = cross(g.n, ft);
   }
   if (buf.enabled()) {
     store3(buf.force, k, F);
-    store3(buf.torque_i, k, Eff::friction ? cross(r_i, ft) : Vec3<T>());
-    store3(buf.torque_j, k, Eff::friction ? cross(r_j, T(-1) * ft) : Vec3<T>());
+    store3(buf.torque_i, k, Eff::friction ? (-arm_i) * nxft : Vec3<T>());
+    store3(buf.torque_j, k, Eff::friction ? (-arm_j) * nxft : Vec3<T>());
   } else {
+    scatter_add3(fa, g.i, F);
+    if (IsPair) scatter_add3(fa, g.j, T(-1) * F);
     if (Eff::friction) {
-      atomic_add3(p.torque, g.i, cross(r_i, ft));
-      if (g.j >= 0) atomic_add3(p.torque, g.j, cross(r_j, T(-1) * ft));
+      scatter_add3(ta, g.i, (-arm_i) * nxft);
+      if (IsPair) scatter_add3(ta, g.j, (-arm_j) * nxft);
     }
-    atomic_add3(p.force, g.i, F);
-    if (g.j >= 0) atomic_add3(p.force, g.j, T(-1) * F);
   }
   if (out.normal_force.extent(0) > 0) out.normal_force(k) = fn;
   if (out.overlap.extent(0) > 0) out.overlap(k) = g.delta;
@@ -123,48 +155,87 @@ KOKKOS_INLINE_FUNCTION void finish_contact(const Model& model, const Particles<T
 
 }  // namespace detail
 
-// Particle-particle contacts. Forces and torques are added to p.force / p.torque (zero them
-// first). dt is the step over which the tangential displacement grows.
+// Particle-particle contacts. Forces and torques are added to the particles through `sums`
+// (call sums.begin() before the pass's kernels and sums.end() after them). dt is the step over
+// which the tangential displacement grows.
+template <class Model, class T, class Device, class Policy>
+void compute_pair_forces(const Model& model, const Particles<T, Device>& p, const ContactList<Device>& c,
+                         const ContactHistory<T, Device>& h, T dt, const ForceSums<T, Device, Policy>& sums,
+                         const ContactOutputs<T, Device>& out = {},
+                         const ContactForceBuffer<T, Device>& buf = {}) {
+  using exec = typename Device::execution_space;
+  constexpr bool side_order = detail::uses_side_order<Model>::value;
+  const int nmat = model.nmat;
+  const auto fsum = sums.force.scatter;
+  const auto tsum = sums.torque.scatter;
+  const auto first = c.first;
+  const auto second = c.second;
+  const auto hdata = h.data;
+  Kokkos::parallel_for(
+      "epac::compute_pair_forces", Kokkos::RangePolicy<exec>(0, c.count), KOKKOS_LAMBDA(int k) {
+        const int i = first(k), j = second(k);
+        ContactGeometry<T> g = pair_geometry<T, Device, side_order>(p, i, j, nmat);
+        g.dt = dt;
+        const T half = T(0.5) * g.delta;  // contact point: middle of the overlap zone
+        const Vec3<T> v_rel = load3(p.v, i) - load3(p.v, j);
+        auto fa = fsum.access();
+        auto ta = tsum.access();
+        detail::finish_contact<true>(model, p, g, v_rel, g.R_i - half, g.R_j - half,
+                                     HistoryRow<T, Device>{hdata, k, 0}, out, buf, k, fa, ta);
+      });
+}
+
+// Particle-wall contacts: c.first = particle, c.second = wall index.
+template <class Model, class T, class Device, class Policy>
+void compute_wall_forces(const Model& model, const Particles<T, Device>& p, const Walls<T, Device>& w,
+                         const ContactList<Device>& c, const ContactHistory<T, Device>& h, T dt,
+                         const ForceSums<T, Device, Policy>& sums,
+                         const ContactOutputs<T, Device>& out = {},
+                         const ContactForceBuffer<T, Device>& buf = {}) {
+  using exec = typename Device::execution_space;
+  const int nmat = model.nmat;
+  const auto fsum = sums.force.scatter;
+  const auto tsum = sums.torque.scatter;
+  const auto first = c.first;
+  const auto second = c.second;
+  const auto hdata = h.data;
+  Kokkos::parallel_for(
+      "epac::compute_wall_forces", Kokkos::RangePolicy<exec>(0, c.count), KOKKOS_LAMBDA(int k) {
+        const int i = first(k), wl = second(k);
+        ContactGeometry<T> g = wall_geometry(p, w, i, wl, nmat);
+        g.dt = dt;
+        // contact point on the plane
+        const Vec3<T> v_rel = load3(p.v, i) - load3(w.velocity, wl);
+        auto fa = fsum.access();
+        auto ta = tsum.access();
+        detail::finish_contact<false>(model, p, g, v_rel, g.R_i - g.delta, T(0),
+                                      HistoryRow<T, Device>{hdata, k, 0}, out, buf, k, fa, ta);
+      });
+}
+
+// One-call forms for hosts that evaluate a single list per pass (tests, small tools): they make
+// the pass's sums themselves. Per-thread copies are allocated on every call, so a host loop
+// should keep a ForceSums and use the forms above.
 template <class Model, class T, class Device>
 void compute_pair_forces(const Model& model, const Particles<T, Device>& p, const ContactList<Device>& c,
                          const ContactHistory<T, Device>& h, T dt,
                          const ContactOutputs<T, Device>& out = {},
                          const ContactForceBuffer<T, Device>& buf = {}) {
-  using exec = typename Device::execution_space;
-  const int nmat = model.nmat;
-  Kokkos::parallel_for(
-      "epac::compute_pair_forces", Kokkos::RangePolicy<exec>(0, c.count), KOKKOS_LAMBDA(int k) {
-        const int i = c.first(k), j = c.second(k);
-        ContactGeometry<T> g = pair_geometry(p, i, j, nmat);
-        g.dt = dt;
-        // branch vectors to the contact point (middle of the overlap zone)
-        const Vec3<T> r_i = T(-1) * (g.R_i - T(0.5) * g.delta) * g.n;
-        const Vec3<T> r_j = (g.R_j - T(0.5) * g.delta) * g.n;
-        const Vec3<T> v_c = load3(p.v, i) + cross(load3(p.omega, i), r_i) - load3(p.v, j) -
-                            cross(load3(p.omega, j), r_j);
-        g.delta_dot = -dot(v_c, g.n);
-        detail::finish_contact(model, p, g, v_c, r_i, r_j, HistoryRow<T, Device>{h.data, k, 0}, out, buf, k);
-      });
+  ForceSums<T, Device> sums(p);
+  sums.begin();
+  compute_pair_forces(model, p, c, h, dt, sums, out, buf);
+  sums.end();
 }
 
-// Particle-wall contacts: c.first = particle, c.second = wall index.
 template <class Model, class T, class Device>
 void compute_wall_forces(const Model& model, const Particles<T, Device>& p, const Walls<T, Device>& w,
                          const ContactList<Device>& c, const ContactHistory<T, Device>& h, T dt,
                          const ContactOutputs<T, Device>& out = {},
                          const ContactForceBuffer<T, Device>& buf = {}) {
-  using exec = typename Device::execution_space;
-  const int nmat = model.nmat;
-  Kokkos::parallel_for(
-      "epac::compute_wall_forces", Kokkos::RangePolicy<exec>(0, c.count), KOKKOS_LAMBDA(int k) {
-        const int i = c.first(k), wl = c.second(k);
-        ContactGeometry<T> g = wall_geometry(p, w, i, wl, nmat);
-        g.dt = dt;
-        const Vec3<T> r_i = T(-1) * (g.R_i - g.delta) * g.n;  // contact point on the plane
-        const Vec3<T> v_c = load3(p.v, i) + cross(load3(p.omega, i), r_i) - load3(w.velocity, wl);
-        g.delta_dot = -dot(v_c, g.n);
-        detail::finish_contact(model, p, g, v_c, r_i, Vec3<T>(), HistoryRow<T, Device>{h.data, k, 0}, out, buf, k);
-      });
+  ForceSums<T, Device> sums(p);
+  sums.begin();
+  compute_wall_forces(model, p, w, c, h, dt, sums, out, buf);
+  sums.end();
 }
 
 }  // namespace epac

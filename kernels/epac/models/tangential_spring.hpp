@@ -12,32 +12,39 @@ namespace epac {
 // Returns the tangential force on particle i. v_t is the tangential relative velocity of i's
 // contact point with respect to j's (or the wall's). `normal_force` is the law's normal force f
 // (Nan (23) uses f, without damping); the Coulomb bound is mu |f|, so adhesive tension counts.
+// damp_t: the viscous coefficient of Nan (25) times sqrt(m* k_t) (0 without damping), so that
+// the caller can share the square root with the normal damping.
+// Hot path: one sqrt while the contact sticks (the rescale after the rotation), magnitudes
+// compared squared; the sliding branch adds one more.
 template <class T, class Row>
-KOKKOS_INLINE_FUNCTION Vec3<T> tangential_spring_force(const NormalForce<T>& nf, const Vec3<T>& n,
-                                                       const Vec3<T>& v_t, T m_eff, T dt,
-                                                       const Row& h) {
+KOKKOS_FORCEINLINE_FUNCTION Vec3<T> tangential_spring_force(const NormalForce<T>& nf, const Vec3<T>& n,
+                                                            const Vec3<T>& v_t, T damp_t, T dt, const Row& h) {
   Vec3<T> xi(h(0), h(1), h(2));
-  // Rotate into the current tangent plane, keeping |xi|.
-  const T len_old = norm(xi);
-  xi -= dot(xi, n) * n;
-  const T len_new = norm(xi);
-  if (len_new > T(0)) xi *= len_old / len_new;
+  // Rotate into the current tangent plane, keeping |xi|: xi - (xi.n) n, scaled by
+  // sqrt(|xi|^2 / |xi - (xi.n) n|^2) (domain: the quotient is >= 1 and finite when len2_new > 0).
+  const T xn = dot(xi, n);
+  if (xn != T(0)) {
+    const T len2_old = dot(xi, xi);
+    xi -= xn * n;
+    const T len2_new = dot(xi, xi);
+    if (len2_new > T(0)) xi *= math::sqrt(len2_old / len2_new);
+  }
   xi += dt * v_t;
-  const T damp = nf.damping_t * math::sqrt_nonneg(m_eff * nf.k_t);
-  Vec3<T> ft = T(-1) * nf.k_t * xi - damp * v_t;  // Nan (21) + (25): opposes the displacement
+  Vec3<T> ft = T(-1) * nf.k_t * xi - damp_t * v_t;  // Nan (21) + (25): opposes the displacement
   const T f_lim = nf.mu * math::fabs(nf.f);
-  const T ft_mag = norm(ft);
-  if (ft_mag > f_lim) {
+  const T ft2 = dot(ft, ft);
+  if (ft2 > f_lim * f_lim) {
     // Sliding, Nan (23): |F_t| = mu |f| along -delta_t, no viscous part; the spring is
     // shortened to the length that carries exactly that force.
-    const T xi_mag = norm(xi);
-    if (xi_mag > T(0) && nf.k_t > T(0)) {
-      const Vec3<T> dir = (T(1) / xi_mag) * xi;
+    const T xi2 = dot(xi, xi);
+    if (xi2 > T(0) && nf.k_t > T(0)) {
+      const Vec3<T> dir = (T(1) / math::sqrt(xi2)) * xi;
       ft = T(-1) * f_lim * dir;
       xi = (f_lim / nf.k_t) * dir;
     } else {
-      // No spring direction (k_t == 0 or xi == 0): the damping alone exceeded the limit.
-      ft = ft_mag > T(0) ? (f_lim / ft_mag) * ft : Vec3<T>();
+      // No spring direction (k_t == 0 or xi == 0): the damping alone exceeded the limit
+      // (ft2 > f_lim^2 >= 0, so the sqrt is of a positive number).
+      ft = (f_lim / math::sqrt(ft2)) * ft;
       xi = Vec3<T>();
     }
   }

@@ -2,6 +2,7 @@
 // Particle state, structure of arrays (design.md section 3). Each vector quantity is an
 // (n x 3) LayoutLeft view, so each component is contiguous.
 #include <epac/core/kokkos_compat.hpp>
+#include <epac/state/periodic_box.hpp>
 
 #include <cstdint>
 #include <string>
@@ -22,6 +23,7 @@ struct Particles {
   scalar_view radius;         // current (apparent) radius R; equals R0 unless MDR grows it
   Kokkos::View<int*, Device> material;
   Kokkos::View<std::int64_t*, Device> gid;  // global id: history keys and MDR side order
+  PeriodicBox<T> box;  // periodic axes of the contact geometry (default: none)
 
   Particles() = default;
   explicit Particles(int count, const std::string& label = "particles")  // host

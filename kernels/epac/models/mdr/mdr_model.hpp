@@ -64,6 +64,7 @@ struct Mdr {
   using effects = Eff;
   using device_type = Device;
   static constexpr const char* name = "mdr";
+  static constexpr bool uses_side_order = true;  // sides ordered by global id (g.i_is_first)
 
   // --- history layout: [pair fields][side 0][side 1] ---
   static constexpr int kPlasticFields = Eff::plasticity ? 4 : 0;  // delta_o,max, yielded, c_A, delta_p
