@@ -18,15 +18,20 @@ Material glass() {
   return m;
 }
 
-template <class Model>
+// Sums: the accumulation policy (compute/particle_sums.hpp). DefaultSums is what the backend
+// gets (per-thread copies on OpenMP); AtomicSums forces atomics, to show what they cost.
+template <class Sums = DefaultSums, class Model>
 void run_contact_kernel(benchmark::State& state, const Model& model) {
   using T = typename Model::scalar_type;
   using D = typename Model::device_type;
   auto pk = bench::make_dense_packing<T, D>(static_cast<int>(state.range(0)));
   ContactHistory<T, D> h(pk.contacts.count, Model::history_size);
+  ForceSums<T, D, Sums> sums(pk.particles);
   for (auto _ : state) {
     zero_forces(pk.particles);
-    compute_pair_forces(model, pk.particles, pk.contacts, h, T(1e-7));
+    sums.begin();
+    compute_pair_forces(model, pk.particles, pk.contacts, h, T(1e-7), sums);
+    sums.end();
     Kokkos::fence();
   }
   state.SetItemsProcessed(state.iterations() * pk.contacts.count);
@@ -39,6 +44,10 @@ void run_contact_kernel(benchmark::State& state, const Model& model) {
 template <class T>
 void BM_HertzMindlin(benchmark::State& state) {
   run_contact_kernel(state, HertzMindlin<T, Effects<kFriction | kDamping>>::create({glass()}));
+}
+template <class T>
+void BM_HertzMindlinAtomic(benchmark::State& state) {
+  run_contact_kernel<AtomicSums>(state, HertzMindlin<T, Effects<kFriction | kDamping>>::create({glass()}));
 }
 template <class T>
 void BM_HertzOnly(benchmark::State& state) {  // no friction, no damping: what the effects cost
@@ -77,6 +86,7 @@ void packing_sizes(benchmark::internal::Benchmark* b) {
 
 BENCHMARK_TEMPLATE(BM_HertzMindlin, double)->Apply(packing_sizes);
 BENCHMARK_TEMPLATE(BM_HertzMindlin, float)->Apply(packing_sizes);
+BENCHMARK_TEMPLATE(BM_HertzMindlinAtomic, double)->Apply(packing_sizes);
 BENCHMARK_TEMPLATE(BM_HertzMindlinDeterministic, double)->Apply(packing_sizes);
 BENCHMARK_TEMPLATE(BM_HertzOnly, double)->Apply(packing_sizes);
 BENCHMARK_TEMPLATE(BM_HertzOnly, float)->Apply(packing_sizes);

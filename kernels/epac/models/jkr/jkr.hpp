@@ -24,6 +24,7 @@ namespace epac {
 template <class T>
 struct JkrPair {
   T E_star, surface_energy, kt_over_kn, c_damp, mu;
+  T a0_coeff;  // (2 pi Gamma / E*)^(1/3): a_0 = a0_coeff R*^(2/3), (B5), one cube root per contact
 };
 
 template <class T, class Eff = Effects<kAdhesion | kFriction | kDamping>, class Device = DefaultDevice>
@@ -50,7 +51,7 @@ struct Jkr {
         if (g.delta < T(0)) return r;  // contact forms at delta = 0
         cs = T(1);
       }
-      const JkrScales<T> s = jkr_scales(gamma, g.R_eff, p.E_star);
+      const JkrScales<T> s = jkr_scales_from(p.a0_coeff, gamma, g.R_eff);
       const T d = g.delta / s.delta_s;  // delta_s > 0
       if (!(d >= jkr_critical_overlap_ratio<T>())) {  // breaks at the critical overlap
         row(0) = T(0);
@@ -84,10 +85,11 @@ struct Jkr {
       for (int b = 0; b < m.nmat; ++b) {
         const Material& A = materials[a];
         const Material& B = materials[b];
-        if (A.rigid && B.rigid) { h(a * m.nmat + b) = {T(0), T(0), T(0), T(0), T(0)}; continue; }
+        if (A.rigid && B.rigid) { h(a * m.nmat + b) = {T(0), T(0), T(0), T(0), T(0), T(0)}; continue; }
         const PairProperties pp = pair_properties(A, B);
         h(a * m.nmat + b) = {T(pp.E_star), T(pp.surface_energy), T(4.0 * pp.G_star / pp.E_star),
-                             T(hertz_damping_coefficient(pp.restitution)), T(pp.friction)};
+                             T(hertz_damping_coefficient(pp.restitution)), T(pp.friction),
+                             T(std::cbrt(2.0 * constants<double>::pi * pp.surface_energy / pp.E_star))};
       }
     Kokkos::deep_copy(m.pairs, h);
     return m;

@@ -31,27 +31,53 @@ KOKKOS_INLINE_FUNCTION JkrScales<T> jkr_scales(T gamma, T R_star, T E_star) {
   return s;
 }
 
+// The same scales from the pair's precomputed (2 pi Gamma / E*)^(1/3): one cube root per contact.
+template <class T>
+KOKKOS_INLINE_FUNCTION JkrScales<T> jkr_scales_from(T a0_coeff, T gamma, T R_star) {
+  JkrScales<T> s;
+  const T r13 = math::cbrt(R_star);  // R* > 0
+  s.a0 = a0_coeff * r13 * r13;
+  s.delta_s = s.a0 * s.a0 / R_star;
+  s.f_ce = T(1.5) * constants<T>::pi * gamma * R_star;
+  return s;
+}
+
 template <class T>
 KOKKOS_INLINE_FUNCTION T jkr_critical_radius_ratio() { return T(0.39685026299204984); }  // 4^(-2/3)
 template <class T>
 KOKKOS_INLINE_FUNCTION T jkr_critical_overlap_ratio() { return T(-0.47247039371057745); }  // -(3/4) 4^(-1/3)
 
-// x = a/a_0 on the stable branch for d = delta/delta_s >= d_c (returns x_c below d_c).
-// Bracket: g(x) = x^2 - sqrt(x) - d is increasing on [x_c, inf); g(x_c) = d_c - d <= 0 and, with
-// t = sqrt(max(d,0)), g(t + 1) >= 0 because (t+1)^2 - sqrt(t+1) >= t^2 for t >= 0. At x_c the
-// derivative vanishes; bracketed_newton bisects there.
+// x = a/a_0 on the stable branch for d = delta/delta_s >= d_c (returns x_c below d_c), in closed
+// form (no iteration; LAMMPS's granular jkr also solves it in closed form). With y = sqrt(x), (B3)
+// is the quartic y^4 - y - d = 0. Ferrari: (y^2 + m)^2 = 2m y^2 + y + m^2 + d is a perfect square
+// in y when m solves the resolvent cubic m^3 + d m - 1/8 = 0, whose real root (Cardano) is
+// m = u - d/(3u), u = cbrt(1/16 + S), S = sqrt(1/256 + d^3/27). Written as
+// m = (1/8) / (u^2 + u v + v^2), v = d/(3u) (the identity u^3 - v^3 = 1/8), it has no cancellation
+// at large d, where m -> 1/(8d). The stable (largest) root is then y = (s + sqrt(2/s - s^2))/2,
+// s = sqrt(2m). Domains: S's argument is >= 0 for d >= d_c (it is 0 exactly at d_c, where the
+// two roots merge and 2/s - s^2 = 0): both clamped at 0 against round-off; u >= cbrt(1/16) > 0;
+// m > 0 so s > 0. One Newton step on the quartic polishes the last bits where its slope
+// 4y^3 - 1 is well away from 0 (it vanishes at d_c). Beyond d = 1e6, d^3 would overflow float:
+// there y starts at d^(1/4) and two Newton steps converge (relative correction ~ d^(-3/4)/4).
 template <class T>
-KOKKOS_INLINE_FUNCTION T jkr_contact_radius_ratio(T d, int max_iter = 200) {
+KOKKOS_INLINE_FUNCTION T jkr_contact_radius_ratio(T d) {
   const T xc = jkr_critical_radius_ratio<T>();
   if (!(d > jkr_critical_overlap_ratio<T>())) return xc;
-  const T hi = math::sqrt(math::max(d, T(0))) + T(1);
-  auto fdf = [d](T x, T& f, T& df) {
-    const T sx = math::sqrt(x);  // x >= x_c > 0 inside the bracket
-    f = x * x - sx - d;
-    df = T(2) * x - T(0.5) / sx;
-  };
-  const T tol = sizeof(T) == 4 ? T(1e-6) : T(1e-13);
-  return bracketed_newton<T>(fdf, xc, hi, tol, max_iter).x;
+  T y;
+  if (d > T(1e6)) {
+    y = math::sqrt(math::sqrt(d));
+    for (int it = 0; it < 2; ++it) y -= (y * y * y * y - y - d) / (T(4) * y * y * y - T(1));  // 4y^3 - 1 > 100
+  } else {
+    const T S = math::sqrt_nonneg(T(1) / T(256) + d * d * d / T(27));
+    const T u = math::cbrt(T(1) / T(16) + S);
+    const T v = d / (T(3) * u);
+    const T m = T(0.125) / (u * u + u * v + v * v);  // denominator >= (3/4) u^2 > 0
+    const T s = math::sqrt(T(2) * m);
+    y = T(0.5) * (s + math::sqrt_nonneg(T(2) / s - s * s));
+    const T slope = T(4) * y * y * y - T(1);
+    if (slope > T(0.5)) y -= (y * y * y * y - y - d) / slope;
+  }
+  return math::max(y * y, xc);
 }
 
 // f/f_ce at x, (B1).

@@ -1,0 +1,254 @@
+#!/usr/bin/env python3
+"""epac against LAMMPS 4Feb2025 on LAMMPS's own fcc benchmark scene, in one run, side by side.
+
+The scene (../shared/peers/lammps/in.fcc_compress_model; epac: bench/peers/fcc_compress.toml):
+10,976 spheres on an fcc lattice in a fully periodic box, compressed by an affine box deformation
+to 0.88 (linear) in 500 steps, then held 200 steps; about 65,856 contacts in the hold phase. Both
+codes are timed on the hold phase only (LAMMPS: the loop time of its last `run`; epac: the
+steps after the deformation, `epac-run --time-after 500`), per active contact and step.
+
+For each law and thread count the LAMMPS and epac runs alternate, `--repeats` times, and the best
+of each is kept (the machine is shared: compare the ratios of one run, never absolute times
+across runs). Prints a markdown table and writes JSON (--json).
+
+Usage:
+  python3 bench/peers/side_by_side.py [--threads 1 2] [--repeats 3] [--laws hm jkr nan mdr mdr_growth]
+                                      [--precision double float] [--json FILE] [--quick]
+LAMMPS is built on first use (about 2-5 min; cached in ~/.cache/lammps-peer) with the scripts in
+../shared/peers/lammps; epac-run is taken from $EPAC_BUILD_DIR (default build/) and built if missing.
+"""
+import argparse
+import json
+import os
+import re
+import subprocess
+import sys
+import tempfile
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+PEERS = os.path.normpath(os.path.join(ROOT, "..", "shared", "peers", "lammps"))
+SCENE = os.path.join(ROOT, "bench", "peers", "fcc_compress.toml")
+LMP_DEFAULT = os.path.expanduser("~/.cache/lammps-peer/build/lmp")
+
+# law -> (LAMMPS pair files with their thread mode, epac materials + model block)
+#   thread mode "omp": OPENMP style (-sf omp -pk omp N); "serial": no threaded style exists, so
+#   LAMMPS runs it on one thread whatever N is (reported in the N column all the same).
+LAWS = {
+    "hm": {
+        "title": "Hertz-Mindlin (friction, damping)",
+        "lammps": [("hhist_omp", "omp", "gran/hertz/history/omp"),
+                   ("hm_mindlin", "serial", "granular hertz/material + mindlin")],
+        "epac": """
+[materials.grain]
+youngs_modulus = 1.0e9
+poisson_ratio = 0.3
+density = 1000.0
+restitution = 0.5
+friction = 0.5
+
+[model]
+name = "hertz_mindlin"
+""",
+    },
+    "jkr": {
+        "title": "JKR + Mindlin (surface energy 1 J/m^2)",
+        "lammps": [("jkr_mindlin", "serial", "granular jkr + mindlin")],
+        "epac": """
+[materials.grain]
+youngs_modulus = 1.0e9
+poisson_ratio = 0.3
+density = 1000.0
+restitution = 0.5
+friction = 0.5
+surface_energy = 1.0
+
+[model]
+name = "jkr"
+""",
+    },
+    "nan": {
+        "title": "Nan 2022 (adhesion 1 J/m^2, yield 5 MPa)",
+        "lammps": [],
+        "epac": """
+[materials.grain]
+youngs_modulus = 1.0e9
+poisson_ratio = 0.3
+density = 1000.0
+restitution = 0.5
+friction = 0.5
+surface_energy = 1.0
+yield_stress = 5.0e6
+
+[model]
+name = "nan2022"
+""",
+    },
+    "mdr": {
+        "title": "MDR, plasticity, no adhesion, no growth (Y 5 MPa)",
+        "lammps": [("mdr", "serial", "granular mdr")],
+        "epac": """
+[materials.grain]
+youngs_modulus = 1.0e9
+poisson_ratio = 0.3
+density = 1000.0
+restitution = 0.5
+friction = 0.5
+yield_stress = 5.0e6
+
+[model]
+name = "mdr"
+effects = ["plasticity", "friction", "damping"]
+""",
+    },
+    "mdr_growth": {
+        "title": "MDR, plasticity + radius growth (Y 5 MPa)",
+        "lammps": [("mdr", "serial", "granular mdr")],
+        "epac": """
+[materials.grain]
+youngs_modulus = 1.0e9
+poisson_ratio = 0.3
+density = 1000.0
+restitution = 0.5
+friction = 0.5
+yield_stress = 5.0e6
+
+[model]
+name = "mdr"
+effects = ["plasticity", "radius_growth", "friction", "damping"]
+""",
+    },
+}
+
+
+def ensure_lammps(lmp):
+    if os.path.exists(lmp):
+        return lmp
+    print(f"[side_by_side] building LAMMPS into {os.path.dirname(lmp)} (first use only)", flush=True)
+    tarball = subprocess.check_output(["bash", os.path.join(PEERS, "fetch-lammps-source.sh")], text=True).split()[-1]
+    subprocess.check_call(["bash", os.path.join(PEERS, "build-lammps.sh"), tarball], stdout=subprocess.DEVNULL)
+    return lmp
+
+
+def ensure_epac_run():
+    build = os.environ.get("EPAC_BUILD_DIR", os.path.join(ROOT, "build"))
+    exe = os.path.join(build, "drivers", "epac-run")
+    if not os.path.exists(exe):
+        subprocess.check_call(["cmake", "-S", ROOT, "-B", build, "-DCMAKE_BUILD_TYPE=Release"], stdout=subprocess.DEVNULL)
+        subprocess.check_call(["cmake", "--build", build, "-j", str(os.cpu_count() or 2), "--target", "epac-run"],
+                              stdout=subprocess.DEVNULL)
+    return exe
+
+
+def lammps_hold(lmp, pair, mode, threads, ncell, workdir, tag):
+    """Runs LAMMPS; returns hold-phase loop seconds, steps and contacts (from its own log)."""
+    log = os.path.join(workdir, f"log.{pair}.{threads}t.{tag}")
+    cmd = [lmp, "-in", "in.fcc_compress_model", "-var", "model", pair, "-var", "ncell", str(ncell),
+           "-log", log, "-screen", "none"]
+    env = dict(os.environ, OMP_NUM_THREADS=str(threads if mode == "omp" else 1))
+    if mode == "omp":
+        cmd += ["-sf", "omp", "-pk", "omp", str(threads)]
+    subprocess.check_call(cmd, cwd=PEERS, env=env)
+    txt = open(log).read()
+    blocks = txt.split("Loop time of ")
+    last = blocks[-1]
+    loop = float(last.split()[0])
+    steps = int(re.search(r"for (\d+) steps", last).group(1))
+    rows = [l.split() for l in blocks[-2].splitlines() if re.match(r"^\s+\d+\s+\d+\s", l)]
+    contacts = float(rows[-1][3])
+    pair_s = float(re.search(r"^Pair\s*\|\s*[0-9.eE+-]+\s*\|\s*([0-9.eE+-]+)", last, re.M).group(1))
+    return {"loop_s": loop, "steps": steps, "contacts": contacts, "pair_s": pair_s,
+            "ns_per_contact_step": 1e9 * loop / (contacts * steps)}
+
+
+def epac_scene(law, ncell):
+    base = open(SCENE).read()
+    # the law block sits between the markers; everything else (box, lattice, run) is shared
+    new, n = re.subn(r"(# --- law ---\n).*?(# --- end law ---\n)", lambda m: m.group(1) + LAWS[law]["epac"].lstrip() + m.group(2),
+                     base, flags=re.S)
+    if n != 1:
+        sys.exit(f"{SCENE}: the '# --- law ---' / '# --- end law ---' markers are missing")
+    if ncell != 14:
+        a = 2.0 * 2 ** 0.5 * 1e-3
+        new = re.sub(r"cells = \[14, 14, 14\]", f"cells = [{ncell}, {ncell}, {ncell}]", new)
+        new = re.sub(r"hi = \[[^\]]*\]", f"hi = [{ncell * a!r}, {ncell * a!r}, {ncell * a!r}]", new)
+    return new
+
+
+def epac_hold(exe, law, threads, precision, ncell, workdir, tag, deform_steps=500):
+    scene = os.path.join(workdir, f"fcc_{law}.toml")
+    with open(scene, "w") as f:
+        f.write(epac_scene(law, ncell))
+    out = os.path.join(workdir, f"epac.{law}.{precision}.{threads}t.{tag}")
+    env = dict(os.environ, OMP_NUM_THREADS=str(threads), OMP_PROC_BIND=os.environ.get("OMP_PROC_BIND", "false"))
+    subprocess.check_call([exe, scene, "--threads", str(threads), "--precision", precision, "--quiet",
+                           "--out", out, "--time-after", str(deform_steps)], env=env)
+    s = json.load(open(os.path.join(out, "summary.json")))
+    t = s["timed"]
+    return {"loop_s": t["wall_s"], "steps": t["steps"], "contacts": t["active_contacts_mean"],
+            "list_contacts": t["list_contacts_mean"], "force_s": (s.get("phases") or {}).get("force"),
+            "ns_per_contact_step": 1e9 * t["wall_s"] / (t["active_contacts_mean"] * t["steps"])}
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--threads", type=int, nargs="+", default=[1, 2])
+    ap.add_argument("--repeats", type=int, default=3)
+    ap.add_argument("--laws", nargs="+", default=list(LAWS), choices=list(LAWS))
+    ap.add_argument("--precision", nargs="+", default=["double"], choices=["double", "float"])
+    ap.add_argument("--ncell", type=int, default=14)
+    ap.add_argument("--json", default=None, help="write the measurements here")
+    ap.add_argument("--lmp", default=os.environ.get("LMP", LMP_DEFAULT))
+    args = ap.parse_args()
+
+    lmp = ensure_lammps(args.lmp)
+    exe = ensure_epac_run()
+    results = []
+    with tempfile.TemporaryDirectory(prefix="epac-peers-") as work:
+        for law in args.laws:
+            for t in args.threads:
+                best = {}
+                for r in range(args.repeats):
+                    for pair, mode, title in LAWS[law]["lammps"]:
+                        m = lammps_hold(lmp, pair, mode, t, args.ncell, work, f"r{r}")
+                        key = ("lammps", pair)
+                        if key not in best or m["loop_s"] < best[key]["loop_s"]:
+                            best[key] = dict(m, title=title, mode=mode)
+                    for prec in args.precision:
+                        m = epac_hold(exe, law, t, prec, args.ncell, work, f"r{r}")
+                        key = ("epac", prec)
+                        if key not in best or m["loop_s"] < best[key]["loop_s"]:
+                            best[key] = m
+                for prec in args.precision:
+                    e = best[("epac", prec)]
+                    row = {"law": law, "title": LAWS[law]["title"], "threads": t, "precision": prec,
+                           "epac_ns": e["ns_per_contact_step"], "epac_contacts": e["contacts"], "peers": []}
+                    for pair, mode, title in LAWS[law]["lammps"]:
+                        l = best[("lammps", pair)]
+                        row["peers"].append({"style": title, "pair_file": f"pair.{pair}", "threaded": mode == "omp",
+                                             "lammps_ns": l["ns_per_contact_step"], "lammps_contacts": l["contacts"],
+                                             "lammps_pair_ns": 1e9 * l["pair_s"] / (l["contacts"] * l["steps"]),
+                                             "speedup": l["ns_per_contact_step"] / e["ns_per_contact_step"]})
+                    results.append(row)
+                    print(json.dumps(row), flush=True)
+
+    print()
+    print(f"Hold phase, whole step loop, ns per active contact-step (best of {args.repeats}); "
+          "speedup = LAMMPS time / epac time (> 1: epac faster)")
+    print()
+    print("| law | threads | epac | LAMMPS style | LAMMPS | speedup |")
+    print("|---|---|---|---|---|---|")
+    for row in results:
+        label = f"{row['title']}" + (f" [{row['precision']}]" if len(args.precision) > 1 else "")
+        if not row["peers"]:
+            print(f"| {label} | {row['threads']} | {row['epac_ns']:.1f} | (no LAMMPS peer) | - | - |")
+        for p in row["peers"]:
+            note = "" if p["threaded"] else " (no threaded style: 1 thread)"
+            print(f"| {label} | {row['threads']} | {row['epac_ns']:.1f} | {p['style']}{note} | "
+                  f"{p['lammps_ns']:.1f} | {p['speedup']:.2f} |")
+    if args.json:
+        with open(args.json, "w") as f:
+            json.dump({"repeats": args.repeats, "ncell": args.ncell, "results": results}, f, indent=1)
+
+
+if __name__ == "__main__":
+    main()
