@@ -25,9 +25,10 @@ import subprocess
 import sys
 import tempfile
 
-ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from fcc_scene import ROOT, fcc_scene  # noqa: E402
+
 PEERS = os.path.normpath(os.path.join(ROOT, "..", "shared", "peers", "lammps"))
-SCENE = os.path.join(ROOT, "bench", "peers", "fcc_compress.toml")
 LMP_DEFAULT = os.path.expanduser("~/.cache/lammps-peer/build/lmp")
 
 # law -> (LAMMPS pair files with their thread mode, epac materials + model block)
@@ -160,24 +161,10 @@ def lammps_hold(lmp, pair, mode, threads, ncell, workdir, tag):
             "ns_per_contact_step": 1e9 * loop / (contacts * steps)}
 
 
-def epac_scene(law, ncell):
-    base = open(SCENE).read()
-    # the law block sits between the markers; everything else (box, lattice, run) is shared
-    new, n = re.subn(r"(# --- law ---\n).*?(# --- end law ---\n)", lambda m: m.group(1) + LAWS[law]["epac"].lstrip() + m.group(2),
-                     base, flags=re.S)
-    if n != 1:
-        sys.exit(f"{SCENE}: the '# --- law ---' / '# --- end law ---' markers are missing")
-    if ncell != 14:
-        a = 2.0 * 2 ** 0.5 * 1e-3
-        new = re.sub(r"cells = \[14, 14, 14\]", f"cells = [{ncell}, {ncell}, {ncell}]", new)
-        new = re.sub(r"hi = \[[^\]]*\]", f"hi = [{ncell * a!r}, {ncell * a!r}, {ncell * a!r}]", new)
-    return new
-
-
 def epac_hold(exe, law, threads, precision, ncell, workdir, tag, deform_steps=500):
     scene = os.path.join(workdir, f"fcc_{law}.toml")
     with open(scene, "w") as f:
-        f.write(epac_scene(law, ncell))
+        f.write(fcc_scene(LAWS[law]["epac"], ncell))
     out = os.path.join(workdir, f"epac.{law}.{precision}.{threads}t.{tag}")
     env = dict(os.environ, OMP_NUM_THREADS=str(threads), OMP_PROC_BIND=os.environ.get("OMP_PROC_BIND", "false"))
     subprocess.check_call([exe, scene, "--threads", str(threads), "--precision", precision, "--quiet",

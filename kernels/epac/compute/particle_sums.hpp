@@ -11,9 +11,11 @@
 //  - Serial: plain adds into the particle views (one thread; nothing to duplicate);
 //  - GPUs (CUDA, HIP, SYCL): atomics on the particle views (thousands of threads, duplicates
 //    would not fit, and hardware float atomics are fast).
-// This is exactly Kokkos' own DefaultDuplication/DefaultContribution for each space. A policy tag
-// overrides it (template argument of ParticleSums, or -DEPAC_PARTICLE_SUMS=atomic|duplicated
-// at compile time for the default).
+// This is Kokkos' own ScatterView choice (DefaultDuplication/DefaultContribution) for each space,
+// implemented here with raw pointers so that a contact pays no View copy. A policy tag overrides
+// it (template argument of ParticleSum/ForceSums), and -DEPAC_PARTICLE_SUMS_ATOMIC or
+// -DEPAC_PARTICLE_SUMS_DUPLICATED changes the default at compile time. The per-thread sums are
+// added in thread order, so a run on a fixed thread count and contact list is reproducible.
 //
 // The deterministic mode (compute/deterministic_reduce.hpp) does not use these sums: it stores
 // per-contact values and gathers them per particle in key order.
@@ -22,6 +24,7 @@
 
 #include <Kokkos_ScatterView.hpp>
 
+#include <cstddef>
 #include <string>
 #include <type_traits>
 
@@ -30,73 +33,133 @@ namespace epac {
 // Policy tags.
 struct AtomicSums {};      // atomic adds into the particle views (GPU default)
 struct DuplicatedSums {};  // per-thread copies, reduced after the pass (host default)
-struct DefaultSums {};     // what the execution space prefers (Kokkos' defaults, see above)
+struct PlainSums {};       // plain adds into the particle views: one thread only (Serial default)
+struct DefaultSums {};     // what the execution space prefers (see above)
 
 namespace detail {
-namespace KE = Kokkos::Experimental;
-
+// The strategy of a policy on an execution space: 0 plain, 1 duplicated, 2 atomic.
 template <class Exec, class Policy>
-struct sums_traits;
-
+struct sums_mode;
 template <class Exec>
-struct sums_traits<Exec, AtomicSums> {
-  using duplication = KE::ScatterNonDuplicated;
-  using contribution = KE::ScatterAtomic;
-};
+struct sums_mode<Exec, AtomicSums> : std::integral_constant<int, 2> {};
 template <class Exec>
-struct sums_traits<Exec, DuplicatedSums> {
-  using duplication = KE::ScatterDuplicated;
-  using contribution = KE::ScatterNonAtomic;
-};
+struct sums_mode<Exec, DuplicatedSums> : std::integral_constant<int, 1> {};
 template <class Exec>
-struct sums_traits<Exec, DefaultSums> {
+struct sums_mode<Exec, PlainSums> : std::integral_constant<int, 0> {};
+template <class Exec>
+struct sums_mode<Exec, DefaultSums>
 #if defined(EPAC_PARTICLE_SUMS_ATOMIC)
-  using duplication = KE::ScatterNonDuplicated;
-  using contribution = KE::ScatterAtomic;
+    : std::integral_constant<int, 2> {
 #elif defined(EPAC_PARTICLE_SUMS_DUPLICATED)
-  using duplication = KE::ScatterDuplicated;
-  using contribution = KE::ScatterNonAtomic;
+    : std::integral_constant<int, 1> {
 #else
-  using duplication = typename Kokkos::Impl::Experimental::DefaultDuplication<Exec>::type;
-  using contribution = typename Kokkos::Impl::Experimental::DefaultContribution<Exec, duplication>::type;
+    // Kokkos' own choice for ScatterView: duplicated on OpenMP/Threads/HPX, plain on Serial,
+    // atomic on device backends.
+    : std::integral_constant<
+          int, std::is_same<typename Kokkos::Impl::Experimental::DefaultDuplication<Exec>::type,
+                            Kokkos::Experimental::ScatterDuplicated>::value
+                   ? 1
+                   : (std::is_same<typename Kokkos::Impl::Experimental::DefaultContribution<
+                                       Exec, Kokkos::Experimental::ScatterNonDuplicated>::type,
+                                   Kokkos::Experimental::ScatterAtomic>::value
+                          ? 2
+                          : 0)> {
 #endif
 };
 }  // namespace detail
 
-// A ScatterView over a particle view (T* or T*[3], LayoutLeft) with the policy's strategy.
-template <class DataType, class Device, class Policy = DefaultSums>
-using particle_scatter_view =
-    Kokkos::Experimental::ScatterView<DataType, Kokkos::LayoutLeft, Device, Kokkos::Experimental::ScatterSum,
-                                      typename detail::sums_traits<typename Device::execution_space, Policy>::duplication,
-                                      typename detail::sums_traits<typename Device::execution_space, Policy>::contribution>;
-
 // True when the policy keeps per-thread copies (memory: threads x the particle view).
 template <class Device, class Policy = DefaultSums>
 constexpr bool sums_are_duplicated() {
-  return std::is_same<typename detail::sums_traits<typename Device::execution_space, Policy>::duplication,
-                      Kokkos::Experimental::ScatterDuplicated>::value;
+  return detail::sums_mode<typename Device::execution_space, Policy>::value == 1;
 }
 
-// One per-particle sum (a scalar view or an n x 3 view) accumulated over a pass:
-//   begin() -> kernels add through access() -> end() adds the pass's sums into `target`.
-// For the atomic and Serial policies the scatter view aliases `target`, so begin/end cost nothing.
+// Device-side handle of one sum for one contact: `a(i) += x` (scalar sums) or `a(i, c) += x`
+// (vector sums). Raw pointers only, so making one per contact costs no View copy (a managed
+// View copy checks its reference count on every construction).
+template <class T, int Mode>
+struct SumAccess {
+  T* base;
+  std::size_t stride;  // distance between components
+  struct Ref {
+    T* p;
+    KOKKOS_FORCEINLINE_FUNCTION void operator+=(T v) const {
+      if (Mode == 2) Kokkos::atomic_add(p, v);
+      else *p += v;
+    }
+  };
+  KOKKOS_FORCEINLINE_FUNCTION Ref operator()(int i) const { return {base + i}; }
+  KOKKOS_FORCEINLINE_FUNCTION Ref operator()(int i, int c) const { return {base + i + c * stride}; }
+};
+
+// The per-thread storage of one sum (n x components x threads, each thread's block contiguous),
+// empty for the plain and atomic strategies. `access()` is called inside the kernel.
+namespace detail {
+struct NoToken {  // the plain and atomic strategies need no thread id (and a device token allocates)
+  KOKKOS_INLINE_FUNCTION int acquire() const { return 0; }
+  int size() const { return 1; }
+};
+}  // namespace detail
+
+template <class T, class Device, int Mode>
+struct SumScatter {
+  using exec = typename Device::execution_space;
+  // Global scope on a host backend: acquire() is the calling thread's rank (its size is the pool
+  // size), so release() is a no-op and is not called.
+  using token_type =
+      std::conditional_t<Mode == 1, Kokkos::Experimental::UniqueToken<exec, Kokkos::Experimental::UniqueTokenScope::Global>,
+                         detail::NoToken>;
+  T* target = nullptr;        // the particle view's data
+  std::size_t stride = 0;     // its component stride
+  std::size_t block = 0;      // elements per thread copy (n x components)
+  Kokkos::View<T*, Device> copies;
+  token_type token;
+
+  KOKKOS_FORCEINLINE_FUNCTION SumAccess<T, Mode> access() const {
+    if (Mode == 1) return {copies.data() + block * static_cast<std::size_t>(token.acquire()), stride};
+    return {target, stride};
+  }
+};
+
+// One per-particle sum (a scalar view T* or an n x 3 view T*[3], LayoutLeft) accumulated over a
+// pass: begin() -> kernels add through scatter.access() -> end() adds the pass's sums into
+// `target`. For the plain and atomic strategies the kernels add into `target` directly, so
+// begin/end cost nothing.
 template <class DataType, class Device, class Policy = DefaultSums>
 struct ParticleSum {
   using target_view = Kokkos::View<DataType, Kokkos::LayoutLeft, Device>;
-  using scatter_view = particle_scatter_view<DataType, Device, Policy>;
+  using value_type = typename target_view::non_const_value_type;
+  static constexpr int mode = detail::sums_mode<typename Device::execution_space, Policy>::value;
   target_view target;
-  scatter_view scatter;
+  SumScatter<value_type, Device, mode> scatter;
 
   ParticleSum() = default;
-  explicit ParticleSum(const target_view& t) : target(t), scatter(t) {}  // host
+  explicit ParticleSum(const target_view& t) : target(t) {  // host
+    scatter.target = t.data();
+    scatter.stride = target_view::rank > 1 ? t.stride(1) : 1;
+    const std::size_t comps = target_view::rank > 1 ? t.extent(1) : 1;
+    scatter.block = scatter.stride * (comps - 1) + t.extent(0);
+    if (mode == 1)
+      scatter.copies = Kokkos::View<value_type*, Device>(std::string("epac::sums.") + t.label(),
+                                                         scatter.block * static_cast<std::size_t>(scatter.token.size()));
+  }
 
   // Clears the per-thread copies (the target keeps its values: the pass adds to them).
   void begin() {  // host
-    if (target.extent(0) > 0) scatter.reset_except(target);
+    if (mode == 1 && target.extent(0) > 0) Kokkos::deep_copy(scatter.copies, value_type(0));
   }
-  // Adds the copies into the target (no-op for the atomic and Serial policies).
+  // Adds the copies into the target, each element summing the threads in a fixed order.
   void end() {  // host
-    if (target.extent(0) > 0) Kokkos::Experimental::contribute(target, scatter);
+    if (mode != 1 || target.extent(0) == 0) return;
+    const SumScatter<value_type, Device, mode> s = scatter;
+    const int copies = static_cast<int>(s.token.size());
+    Kokkos::parallel_for(
+        "epac::sums_reduce", Kokkos::RangePolicy<typename Device::execution_space>(0, s.block),
+        KOKKOS_LAMBDA(std::size_t e) {
+          value_type sum = s.copies(e);
+          for (int c = 1; c < copies; ++c) sum += s.copies(e + c * s.block);
+          s.target[e] += sum;
+        });
   }
   bool bound() const { return target.extent(0) > 0; }
 };
@@ -120,7 +183,7 @@ struct ForceSums {
   }
 };
 
-// Device-side adds through a ScatterView access object (one per contact iteration).
+// Device-side adds of a 3-vector through an access object (one per contact iteration).
 template <class Access, class T>
 KOKKOS_FORCEINLINE_FUNCTION void scatter_add3(const Access& a, int i, const Vec3<T>& v) {
   a(i, 0) += v.x;

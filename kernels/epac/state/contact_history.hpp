@@ -5,6 +5,7 @@
 // nothing.
 #include <epac/core/kokkos_compat.hpp>
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 
@@ -25,14 +26,21 @@ struct ContactHistory {
   std::size_t bytes() const { return data.span() * sizeof(T) + keys.span() * sizeof(std::uint64_t); }
 };
 
-// One contact's row of history, with the model's fields starting at `offset`.
+// One contact's row of history, with the model's fields starting at `offset`. Holds a raw
+// pointer to the row's first field and the field stride, not the View: one is made per contact
+// in the kernels, and a managed View copy would check its reference count each time.
 template <class T, class Device>
 struct HistoryRow {
-  typename ContactHistory<T, Device>::data_view data;
-  int row;
-  int offset;
-  KOKKOS_INLINE_FUNCTION T& operator()(int k) const { return data(row, offset + k); }
-  KOKKOS_INLINE_FUNCTION HistoryRow shifted(int by) const { return {data, row, offset + by}; }
+  T* first = nullptr;       // field `offset` of this row
+  std::size_t stride = 0;   // distance between fields (the view's column stride)
+  HistoryRow() = default;
+  KOKKOS_FORCEINLINE_FUNCTION HistoryRow(const typename ContactHistory<T, Device>::data_view& data, int row, int offset)
+      : first(data.data() + row + static_cast<std::size_t>(offset) * data.stride(1)), stride(data.stride(1)) {}
+  KOKKOS_FORCEINLINE_FUNCTION HistoryRow(T* f, std::size_t s) : first(f), stride(s) {}
+  KOKKOS_FORCEINLINE_FUNCTION T& operator()(int k) const { return first[static_cast<std::size_t>(k) * stride]; }
+  KOKKOS_FORCEINLINE_FUNCTION HistoryRow shifted(int by) const {
+    return HistoryRow(first + static_cast<std::size_t>(by) * stride, stride);
+  }
 };
 
 }  // namespace epac
