@@ -40,7 +40,7 @@ struct ContactForceBuffer {
 
 namespace detail {
 // Models whose sides are ordered by global id (MDR) declare `uses_side_order = true`; the
-// others never load the 64-bit ids.
+// others load the 64-bit ids only for friction (orientation of the tangential history).
 template <class M, class = void>
 struct uses_side_order : std::false_type {};
 template <class M>
@@ -133,7 +133,9 @@ KOKKOS_FORCEINLINE_FUNCTION void finish_contact(const Model& model, const Partic
   if (Eff::friction) {
     const Vec3<T> v_t = v_c - vn * g.n;
     const T damp_t = Eff::damping ? nf.damping_t * math::sqrt_nonneg(g.m_eff * nf.k_t) : T(0);
-    const Vec3<T> ft = tangential_spring_force(nf, g.n, v_t, damp_t, g.dt, trow);
+    // history in the frame of the smaller global id (walls: the particle's)
+    const T orient = (!IsPair || g.i_is_first) ? T(1) : T(-1);
+    const Vec3<T> ft = tangential_spring_force(nf, g.n, v_t, damp_t, g.dt, trow, orient);
     F += ft;
     nxft = cross(g.n, ft);
   }
@@ -164,7 +166,8 @@ void compute_pair_forces(const Model& model, const Particles<T, Device>& p, cons
                          const ContactOutputs<T, Device>& out = {},
                          const ContactForceBuffer<T, Device>& buf = {}) {
   using exec = typename Device::execution_space;
-  constexpr bool side_order = detail::uses_side_order<Model>::value;
+  // global ids: for side-ordered laws and for the orientation of the tangential history
+  constexpr bool side_order = detail::uses_side_order<Model>::value || Model::effects::friction;
   const int nmat = model.nmat;
   const auto fsum = sums.force.scatter;
   const auto tsum = sums.torque.scatter;

@@ -12,14 +12,17 @@ namespace epac {
 // Returns the tangential force on particle i. v_t is the tangential relative velocity of i's
 // contact point with respect to j's (or the wall's). `normal_force` is the law's normal force f
 // (Nan (23) uses f, without damping); the Coulomb bound is mu |f|, so adhesive tension counts.
-// damp_t: the viscous coefficient of Nan (25) times sqrt(m* k_t) (0 without damping), so that
-// the caller can share the square root with the normal damping.
+// damp_t: the viscous coefficient of Nan (25) times sqrt(m* k_t) (0 without damping).
+// orient (+1 or -1): the history holds delta_t of the contact's particle with the smaller global
+// id relative to the other, so that it survives a list that names the pair the other way round
+// (after a rebuild that renumbered the particles); orient = -1 when particle i is the larger id.
 // Hot path: one sqrt while the contact sticks (the rescale after the rotation), magnitudes
 // compared squared; the sliding branch adds one more.
 template <class T, class Row>
 KOKKOS_FORCEINLINE_FUNCTION Vec3<T> tangential_spring_force(const NormalForce<T>& nf, const Vec3<T>& n,
-                                                            const Vec3<T>& v_t, T damp_t, T dt, const Row& h) {
-  Vec3<T> xi(h(0), h(1), h(2));
+                                                            const Vec3<T>& v_t, T damp_t, T dt, const Row& h,
+                                                            T orient = T(1)) {
+  Vec3<T> xi = orient * Vec3<T>(h(0), h(1), h(2));  // exact: orient is +-1
   // Rotate into the current tangent plane, keeping |xi|: xi - (xi.n) n, scaled by
   // sqrt(|xi|^2 / |xi - (xi.n) n|^2) (domain: the quotient is >= 1 and finite when len2_new > 0).
   const T xn = dot(xi, n);
@@ -48,7 +51,7 @@ KOKKOS_FORCEINLINE_FUNCTION Vec3<T> tangential_spring_force(const NormalForce<T>
       xi = Vec3<T>();
     }
   }
-  h(0) = xi.x; h(1) = xi.y; h(2) = xi.z;
+  h(0) = orient * xi.x; h(1) = orient * xi.y; h(2) = orient * xi.z;
   return ft;
 }
 
