@@ -1,4 +1,5 @@
 // epac-run SCENE.toml [--out DIR] [--threads N] [--steps N] [--precision double|float] [--quiet]
+//          [--phase-times]
 // Parses and validates the scene before Kokkos starts, so bad input is refused before anything
 // runs or is written. Exit status: 0 success, 1 runtime failure, 2 invalid input.
 #include "driver/model_registry.hpp"
@@ -27,6 +28,8 @@ int main(int argc, char** argv) {
   app.add_option("--precision", opt.precision, "scalar type: double (default) or float")
       ->check(CLI::IsMember({"double", "float"}));
   app.add_flag("--quiet", opt.quiet, "no informational output and no progress line");
+  app.add_flag("--phase-times", opt.phase_times,
+               "seconds per loop phase (detection, remap, force, growth, integration, output) in summary.json");
   CLI11_PARSE(app, argc, argv);
   opt.progress = isatty(fileno(stdout)) != 0;
 

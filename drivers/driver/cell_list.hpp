@@ -4,9 +4,16 @@
 // 26 neighbouring cells. Built in three passes: count per cell (atomics), exclusive prefix sum,
 // fill (atomics), then each cell's slice is sorted by particle index so that the contact lists
 // built from it come out in the same order on every backend and thread count.
+// Periodic axes (p.box.length > 0): the grid covers the box [lo, lo + L) with n = floor(L / min_cell)
+// cells of edge L / n, positions are binned modulo L (they may lie slightly outside the box
+// between wraps), and the neighbours of an edge cell are across the face. With fewer than 3
+// cells along a periodic axis the -1 and +1 neighbours coincide (n = 2) or are the cell itself
+// (n = 1): each distinct cell is visited once, so every partner is found exactly once (the
+// host keeps every interaction distance below L / 2, so one image at most is in range).
 #include <epac/core/vec3.hpp>
 #include <epac/state/particles.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -17,8 +24,9 @@ namespace driver {
 template <class T, class Device>
 struct CellList {
   Vec3<T> lo;         // lower corner of the grid
-  T h = T(1);         // cell edge
+  Vec3<T> h{T(1), T(1), T(1)};  // cell edge per axis
   int nx = 1, ny = 1, nz = 1;
+  bool px = false, py = false, pz = false;  // periodic axes
   Kokkos::View<int*, Device> start;   // ncells + 1: particles of cell c are sorted(start(c) .. start(c+1)-1)
   Kokkos::View<int*, Device> sorted;  // particle indices, cell-major, ascending within a cell
 
@@ -26,29 +34,57 @@ struct CellList {
 
   // Cell coordinate along one axis, clamped into the grid (a NaN coordinate lands in cell 0;
   // the host has already refused non-finite positions).
-  KOKKOS_INLINE_FUNCTION static int axis_cell(T x, T lo_d, T h_d, int n_d) {
+  // Periodic axis: the cell modulo n_d (the coordinate may be outside the box by a little, or by
+  // any amount for a particle that ran away: the fold is exact either way).
+  KOKKOS_INLINE_FUNCTION static int axis_cell(T x, T lo_d, T h_d, int n_d, bool periodic) {
     const T f = (x - lo_d) / h_d;  // h_d > 0 (checked on the host)
+    if (periodic) {
+      const T nf = T(n_d);
+      T g = f - nf * math::floor(f / nf);  // in [0, n_d]
+      const int c = static_cast<int>(g);
+      return c < n_d ? (c >= 0 ? c : 0) : n_d - 1;
+    }
     return f > T(0) ? (f < T(n_d) ? static_cast<int>(f) : n_d - 1) : 0;
   }
   KOKKOS_INLINE_FUNCTION int cell_of(const Vec3<T>& x) const {
-    const int cx = axis_cell(x.x, lo.x, h, nx), cy = axis_cell(x.y, lo.y, h, ny), cz = axis_cell(x.z, lo.z, h, nz);
+    const int cx = axis_cell(x.x, lo.x, h.x, nx, px), cy = axis_cell(x.y, lo.y, h.y, ny, py),
+              cz = axis_cell(x.z, lo.z, h.z, nz, pz);
     return (cz * ny + cy) * nx + cx;
   }
 
+  // Neighbour range along one axis as offsets [o0, o1] from the cell: clamped at the faces of a
+  // non-periodic axis; on a periodic one -1..1, without repeats when n < 3.
+  KOKKOS_INLINE_FUNCTION static void axis_range(int c, int n_d, bool periodic, int& o0, int& o1) {
+    if (periodic) {
+      o0 = n_d >= 3 ? -1 : 0;
+      o1 = n_d >= 2 ? 1 : 0;
+    } else {
+      o0 = c > 0 ? -1 : 0;
+      o1 = c + 1 < n_d ? 1 : 0;
+    }
+  }
+  KOKKOS_INLINE_FUNCTION static int axis_wrap(int c, int n_d) { return c < 0 ? c + n_d : (c >= n_d ? c - n_d : c); }
+
   // Calls f(j) for every particle j in the cells around position x (its own and the up to 26
-  // neighbours; the grid is not periodic).
+  // neighbours, across the faces of periodic axes), each distinct cell once.
   template <class F>
   KOKKOS_INLINE_FUNCTION void for_each_near(const Vec3<T>& x, F&& f) const {
-    const int cx = axis_cell(x.x, lo.x, h, nx), cy = axis_cell(x.y, lo.y, h, ny), cz = axis_cell(x.z, lo.z, h, nz);
-    const int x0 = cx > 0 ? cx - 1 : 0, x1 = cx + 1 < nx ? cx + 1 : nx - 1;
-    const int y0 = cy > 0 ? cy - 1 : 0, y1 = cy + 1 < ny ? cy + 1 : ny - 1;
-    const int z0 = cz > 0 ? cz - 1 : 0, z1 = cz + 1 < nz ? cz + 1 : nz - 1;
-    for (int z = z0; z <= z1; ++z)
-      for (int y = y0; y <= y1; ++y)
-        for (int xx = x0; xx <= x1; ++xx) {
-          const int c = (z * ny + y) * nx + xx;
+    const int cx = axis_cell(x.x, lo.x, h.x, nx, px), cy = axis_cell(x.y, lo.y, h.y, ny, py),
+              cz = axis_cell(x.z, lo.z, h.z, nz, pz);
+    int x0, x1, y0, y1, z0, z1;
+    axis_range(cx, nx, px, x0, x1);
+    axis_range(cy, ny, py, y0, y1);
+    axis_range(cz, nz, pz, z0, z1);
+    for (int oz = z0; oz <= z1; ++oz) {
+      const int z = axis_wrap(cz + oz, nz);
+      for (int oy = y0; oy <= y1; ++oy) {
+        const int y = axis_wrap(cy + oy, ny);
+        for (int ox = x0; ox <= x1; ++ox) {
+          const int c = (z * ny + y) * nx + axis_wrap(cx + ox, nx);
           for (int s = start(c); s < start(c + 1); ++s) f(sorted(s));
         }
+      }
+    }
   }
 };
 
@@ -89,17 +125,37 @@ CellList<T, Device> build_cell_list(const Particles<T, Device>& p, T min_cell) {
       hi[d] = mm.max_val;
     }
   }
+  // Periodic axes: the grid is the box, whatever the particles' extent.
+  const T box_len[3] = {p.box.length.x, p.box.length.y, p.box.length.z};
+  const T box_lo[3] = {p.box.lo.x, p.box.lo.y, p.box.lo.z};
+  bool per[3];
+  for (int d = 0; d < 3; ++d) {
+    per[d] = box_len[d] > T(0);
+    if (per[d]) {
+      lo[d] = box_lo[d];
+      hi[d] = box_lo[d] + box_len[d];
+    }
+  }
   double h = static_cast<double>(min_cell) > 0 ? static_cast<double>(min_cell) : 1.0;
   auto cells_along = [&](int d) {
-    return static_cast<double>(std::floor((static_cast<double>(hi[d]) - static_cast<double>(lo[d])) / h)) + 1.0;
+    const double ext = static_cast<double>(hi[d]) - static_cast<double>(lo[d]);
+    if (per[d]) return std::max(1.0, std::floor(ext / h));  // cells of edge L / n >= h
+    return static_cast<double>(std::floor(ext / h)) + 1.0;
   };
   const double max_cells = 2.0 * n + 64.0;
   while (cells_along(0) * cells_along(1) * cells_along(2) > max_cells) h *= 1.25;
   cl.lo = Vec3<T>(lo[0], lo[1], lo[2]);
-  cl.h = static_cast<T>(h);
   cl.nx = static_cast<int>(cells_along(0));
   cl.ny = static_cast<int>(cells_along(1));
   cl.nz = static_cast<int>(cells_along(2));
+  const int nd[3] = {cl.nx, cl.ny, cl.nz};
+  T hd[3];
+  for (int d = 0; d < 3; ++d)
+    hd[d] = per[d] ? static_cast<T>(static_cast<double>(box_len[d]) / nd[d]) : static_cast<T>(h);
+  cl.h = Vec3<T>(hd[0], hd[1], hd[2]);
+  cl.px = per[0];
+  cl.py = per[1];
+  cl.pz = per[2];
   const int nc = cl.ncells();
 
   Kokkos::View<int*, Device> count("epac::driver::cell_count", nc);

@@ -34,7 +34,8 @@ ContactList<Device> list_with_room(const ContactList<Device>& old, int count, co
 }
 }  // namespace detail
 
-// Pairs i < j within R_i + R_j + skin. `reuse` donates its storage if large enough.
+// Pairs i < j within R_i + R_j + skin (minimum-image distance on p.box's periodic axes). `reuse`
+// donates its storage if large enough.
 template <class T, class Device>
 ContactList<Device> find_pairs(const Particles<T, Device>& p, const CellList<T, Device>& cells, T skin,
                                const ContactList<Device>& reuse = {}) {
@@ -42,6 +43,8 @@ ContactList<Device> find_pairs(const Particles<T, Device>& p, const CellList<T, 
   const int n = p.n;
   auto x = p.x;
   auto r = p.radius;
+  const PeriodicBox<T> box = p.box;  // distances by minimum image on its periodic axes
+  const bool periodic = box.periodic();
   Kokkos::View<int*, Device> offset("epac::driver::pair_offset", n + 1);
   Kokkos::parallel_for("epac::driver::pair_count", Kokkos::RangePolicy<exec>(0, n), KOKKOS_LAMBDA(int i) {
     const Vec3<T> xi = load3(x, i);
@@ -49,7 +52,8 @@ ContactList<Device> find_pairs(const Particles<T, Device>& p, const CellList<T, 
     int c = 0;
     cells.for_each_near(xi, [&](int j) {
       if (j <= i) return;
-      const Vec3<T> d = xi - load3(x, j);
+      Vec3<T> d = xi - load3(x, j);
+      if (periodic) d = box.minimum_image(d);
       const T cut = ri + r(j) + skin;
       if (dot(d, d) < cut * cut) ++c;
     });
@@ -73,7 +77,8 @@ ContactList<Device> find_pairs(const Particles<T, Device>& p, const CellList<T, 
     int k = offset(i);
     cells.for_each_near(xi, [&](int j) {
       if (j <= i) return;
-      const Vec3<T> d = xi - load3(x, j);
+      Vec3<T> d = xi - load3(x, j);
+      if (periodic) d = box.minimum_image(d);
       const T cut = ri + r(j) + skin;
       if (dot(d, d) < cut * cut) {
         first(k) = i;
@@ -151,6 +156,13 @@ class ContactDetector {
 
   // Detects both lists from scratch and carries the history of persisting contacts over.
   void build(const Particles<T, Device>& p, const Walls<T, Device>& w) {
+    detect(p, w);
+    remap(p);
+  }
+
+  // The two halves of build (timed apart by the driver's --phase-times): the lists and the
+  // rebuild rule's reference state, then the history remap (needs the new lists).
+  void detect(const Particles<T, Device>& p, const Walls<T, Device>& w) {
     T rmax = T(0);
     auto r = p.radius;
     Kokkos::parallel_reduce(
@@ -159,8 +171,6 @@ class ContactDetector {
     const CellList<T, Device> cells = build_cell_list(p, T(2) * rmax + skin_);
     pairs = find_pairs(p, cells, skin_, pairs);
     walls = find_wall_contacts(p, w, skin_, walls);
-    pair_history = remap_history(pair_history, pair_contact_keys(p, pairs), pair_fields_);
-    wall_history = remap_history(wall_history, wall_contact_keys(p, walls), wall_fields_);
     // Reference state for the rebuild rule.
     if (static_cast<int>(x_build_.extent(0)) != p.n) {
       x_build_ = vec_view("epac::driver::x_build", p.n);
@@ -171,6 +181,10 @@ class ContactDetector {
     Kokkos::deep_copy(r_build_, p.radius);
     Kokkos::deep_copy(wall_build_, w.point);
     ++builds;
+  }
+  void remap(const Particles<T, Device>& p) {
+    pair_history = remap_history(pair_history, pair_contact_keys(p, pairs), pair_fields_);
+    wall_history = remap_history(wall_history, wall_contact_keys(p, walls), wall_fields_);
   }
 
   // max_i (|x_i - x_i,build| + max(0, R_i - R_i,build)).

@@ -17,13 +17,15 @@ void make_output_dir(const std::string& dir) {
     throw std::runtime_error("cannot create the output folder '" + dir + "': " + ec.message());
 }
 
-TimeseriesWriter::TimeseriesWriter(const std::string& path, const std::vector<std::string>& walls, bool driven)
-    : out_(path), driven_(driven) {
+TimeseriesWriter::TimeseriesWriter(const std::string& path, const std::vector<std::string>& walls, bool driven,
+                                   bool box)
+    : out_(path), driven_(driven), box_(box) {
   if (!out_) throw std::runtime_error("cannot write '" + path + "'");
   out_ << "step,time,ke_translational,ke_rotational,pe_gravity,pair_contacts,wall_contacts,pair_list,wall_list,"
           "max_overlap_ratio";
   for (const auto& w : walls) out_ << ",force_" << w << ",displacement_" << w;
   if (driven_) out_ << ",driven_fx,driven_fy,driven_fz";
+  if (box_) out_ << ",box_lx,box_ly,box_lz";
   out_ << '\n' << std::setprecision(10);
 }
 
@@ -33,6 +35,7 @@ void TimeseriesWriter::write(const Sample& s) {
        << s.max_overlap_ratio;
   for (std::size_t k = 0; k < s.wall_force.size(); ++k) out_ << ',' << s.wall_force[k] << ',' << s.wall_displacement[k];
   if (driven_) out_ << ',' << s.driven_force[0] << ',' << s.driven_force[1] << ',' << s.driven_force[2];
+  if (box_) out_ << ',' << s.box_edge[0] << ',' << s.box_edge[1] << ',' << s.box_edge[2];
   out_ << '\n';
 }
 
@@ -84,6 +87,13 @@ void write_summary_json(const std::string& path, const RunSummary& s) {
   j["setup_time_s"] = s.setup_time_s;
   j["contact_steps_per_second"] = s.contact_steps_per_second;
   j["active_contact_steps_per_second"] = s.active_contact_steps_per_second;
+  j["particle_steps_per_second"] = s.particle_steps_per_second;
+  if (!s.phases.empty()) {
+    nlohmann::json ph = nlohmann::json::object();
+    for (const auto& kv : s.phases) ph[kv.first] = kv.second;
+    j["phases"] = ph;
+  }
+  if (!s.box_edge.empty()) j["box_edge"] = s.box_edge;
   j["backend"] = s.backend;
   j["threads"] = s.threads;
   j["scalar"] = s.scalar;

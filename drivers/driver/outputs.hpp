@@ -18,12 +18,14 @@ void make_output_dir(const std::string& dir);
 // timeseries.csv: one header line, then one row per sample; columns in drivers/README.md.
 class TimeseriesWriter {
  public:
-  TimeseriesWriter(const std::string& path, const std::vector<std::string>& wall_names, bool driven_columns);
+  TimeseriesWriter(const std::string& path, const std::vector<std::string>& wall_names, bool driven_columns,
+                   bool box_columns = false);
   void write(const Sample& s);
 
  private:
   std::ofstream out_;
   bool driven_;
+  bool box_;
 };
 
 // contacts.csv ([run] contact_output): one row per interacting contact per output step.

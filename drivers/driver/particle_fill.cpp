@@ -54,21 +54,40 @@ double max_radius(const std::vector<ParticleSpec>& ps, double r) {
 
 }  // namespace
 
-void check_no_overlap(const std::vector<ParticleSpec>& ps) {
+void check_no_overlap(const std::vector<ParticleSpec>& ps, const BoxSpec* box) {
   if (ps.size() < 2) return;
-  HostGrid grid(2.0 * max_radius(ps, 0.0));
+  const double reach = 2.0 * max_radius(ps, 0.0);
+  HostGrid grid(reach);
+  // Periodic axes: a particle within `reach` of a face is also looked up at its image on the
+  // other side (positions are wrapped into the box, and the box edge is > 2 reach).
+  const bool periodic = box && box->any_periodic();
   for (int i = 0; i < static_cast<int>(ps.size()); ++i) {
     int hit = -1;
-    grid.any_near(ps[i].position, [&](int j) {
-      const double d = distance(ps[i].position, ps[j].position);
-      const double sum = ps[i].radius + ps[j].radius;
-      if (sum - d > 1e-12 * sum) { hit = j; return true; }
-      return false;
-    });
+    double hit_d = 0;
+    std::vector<double> shifts[3];
+    for (int d = 0; d < 3; ++d) {
+      shifts[d].push_back(0.0);
+      if (!periodic || !box->periodic[d]) continue;
+      const double L = box->edge0(d);
+      if (ps[i].position[d] < box->lo[d] + reach) shifts[d].push_back(L);
+      if (ps[i].position[d] > box->hi[d] - reach) shifts[d].push_back(-L);
+    }
+    for (double sx : shifts[0])
+      for (double sy : shifts[1])
+        for (double sz : shifts[2]) {
+          if (hit >= 0) break;
+          const Vec3d xi{ps[i].position[0] + sx, ps[i].position[1] + sy, ps[i].position[2] + sz};
+          grid.any_near(xi, [&](int j) {
+            const double d = distance(xi, ps[j].position);
+            const double sum = ps[i].radius + ps[j].radius;
+            if (sum - d > 1e-12 * sum) { hit = j; hit_d = d; return true; }
+            return false;
+          });
+        }
     if (hit >= 0) {
       const auto& a = ps[hit];
       const auto& b = ps[i];
-      const double d = distance(a.position, b.position);
+      const double d = hit_d;
       std::ostringstream s;
       s << a.origin << " and " << b.origin << " overlap by " << (a.radius + b.radius - d)
         << " m (centre distance " << d << " m < R_i + R_j = " << (a.radius + b.radius)
@@ -134,6 +153,46 @@ void fill_box(const FillSpec& f, std::vector<ParticleSpec>& ps) {
     ps.push_back(p);
     ++placed;
   }
+}
+
+void wrap_into_box(const BoxSpec& box, std::vector<ParticleSpec>& ps) {
+  for (auto& p : ps)
+    for (int d = 0; d < 3; ++d) {
+      if (!box.periodic[d]) continue;
+      const double L = box.edge0(d);
+      double x = p.position[d] - L * std::floor((p.position[d] - box.lo[d]) / L);
+      if (x >= box.hi[d]) x = box.lo[d];  // round-off at the upper face
+      p.position[d] = x;
+    }
+}
+
+void fill_lattice(const LatticeSpec& l, std::vector<ParticleSpec>& ps) {
+  if (!l.enabled) return;
+  static const double basis[4][3] = {{0, 0, 0}, {0.5, 0.5, 0}, {0.5, 0, 0.5}, {0, 0.5, 0.5}};
+  std::mt19937_64 rng(l.seed);
+  auto uniform = [&rng](double lo, double hi) {  // 53 random bits: the same on every platform
+    const double u = static_cast<double>(rng() >> 11) * (1.0 / 9007199254740992.0);
+    return lo + (hi - lo) * u;
+  };
+  std::int64_t k = 0;
+  ps.reserve(ps.size() + static_cast<std::size_t>(l.count()));
+  for (std::int64_t cz = 0; cz < l.cells[2]; ++cz)
+    for (std::int64_t cy = 0; cy < l.cells[1]; ++cy)
+      for (std::int64_t cx = 0; cx < l.cells[0]; ++cx)
+        for (int b = 0; b < 4; ++b, ++k) {
+          ParticleSpec p;
+          // Evaluation order fixed: radius, then the jitter in x, y, z.
+          p.radius = l.radius_max > l.radius_min ? uniform(l.radius_min, l.radius_max) : l.radius_min;
+          const double cell[3] = {double(cx), double(cy), double(cz)};
+          for (int d = 0; d < 3; ++d) {
+            const double j = l.jitter > 0 ? uniform(-l.jitter, l.jitter) : 0.0;
+            p.position[d] = l.origin[d] + l.a * (cell[d] + basis[b][d]) + j;
+          }
+          p.material = l.material;
+          p.velocity = l.velocity;
+          p.origin = "particles.lattice[" + std::to_string(k) + "]";
+          ps.push_back(p);
+        }
 }
 
 }  // namespace driver

@@ -1,6 +1,7 @@
 #pragma once
 // Host-side placement of particles: the overlap check of an explicit list, and the random
-// non-overlapping fill of a box (random sequential addition on a hashed grid: O(N)).
+// non-overlapping fill of a box (random sequential addition on a hashed grid: O(N)), the fcc
+// lattice fill, and wrapping into a periodic box.
 #include "driver/scene.hpp"
 
 #include <vector>
@@ -11,7 +12,15 @@ namespace driver {
 // Throws SceneError naming the first two particles found overlapping (distance < R_i + R_j by
 // more than 1e-12 (R_i + R_j), so exactly touching particles written with rounded coordinates
 // pass), the overlap and the distance.
-void check_no_overlap(const std::vector<ParticleSpec>& particles);
+// With a box (periodic axes), distances are minimum-image ones: images across the faces count.
+void check_no_overlap(const std::vector<ParticleSpec>& particles, const BoxSpec* box = nullptr);
+
+// Wraps every position into [lo, hi) along the box's periodic axes.
+void wrap_into_box(const BoxSpec& box, std::vector<ParticleSpec>& particles);
+
+// Appends the fcc lattice (LatticeSpec). Deterministic for a given seed on every platform. Does
+// not check overlaps (check_no_overlap does, unless particles.allow_overlap).
+void fill_lattice(const LatticeSpec& lattice, std::vector<ParticleSpec>& particles);
 
 // Appends fill.count particles, none overlapping each other or the particles already present,
 // each wholly inside the box. Deterministic for a given seed. Throws SceneError when the box

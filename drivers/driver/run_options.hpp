@@ -14,6 +14,7 @@ struct RunOptions {
   std::string precision = "double";  // "double" | "float"
   bool quiet = false;                // no informational lines, no progress line
   bool progress = false;             // the \r progress line (main sets it when stdout is a terminal)
+  bool phase_times = false;          // --phase-times: seconds per loop phase in summary.json "phases"
 };
 
 struct RunSummary {
@@ -27,6 +28,12 @@ struct RunSummary {
   double contact_list_mean = 0;       // entries of the pair + wall lists, mean over steps
   double contact_steps_per_second = 0;         // list entries evaluated per second of wall time
   double active_contact_steps_per_second = 0;  // contacts_mean x steps / wall time
+  double particle_steps_per_second = 0;        // particles x steps / wall time
+  // --phase-times: seconds per phase of the loop (driver/phase_times.hpp); empty otherwise
+  // (then summary.json has no "phases").
+  std::vector<std::pair<std::string, double>> phases;
+  // With a [box]: the edges at the end of the run [m] (summary.json "box_edge"); empty otherwise.
+  std::vector<double> box_edge;
   int history_fields = 0;
   std::size_t bytes_per_contact = 0;
   std::string timeseries_path, summary_path;

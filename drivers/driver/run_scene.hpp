@@ -1,6 +1,7 @@
 #pragma once
 // One run of a scene with one compiled (model, effects, scalar) instance: device state, contact
 // detection with a skin, velocity-Verlet steps, outputs (design.md section 4).
+#include "driver/box_motion.hpp"
 #include "driver/contact_detection.hpp"
 #include "driver/contact_sampling.hpp"
 #include "driver/diagnostics.hpp"
@@ -8,10 +9,12 @@
 #include "driver/integrator.hpp"
 #include "driver/model_factory.hpp"
 #include "driver/outputs.hpp"
+#include "driver/phase_times.hpp"
 #include "driver/run_options.hpp"
 #include "driver/scene.hpp"
 
 #include <epac/compute/contact_forces.hpp>
+#include <epac/compute/particle_sums.hpp>
 #include <epac/state/particles.hpp>
 #include <epac/state/walls.hpp>
 
@@ -256,10 +259,16 @@ RunSummary run_scene(const Scene& scene, const RunOptions& opt) {
   const T dt = T(scene.run.dt);
   const T half_dt = T(0.5 * scene.run.dt);
   const int nw = walls.n;
+  BoxMotion<T, Device> box(scene.box);
+  box.apply(p);  // the host wrapped the positions into the box (finish_scene)
 
   ContactDetector<T, Device> det(T(scene.run.skin), F::pair_history_fields, F::wall_history_fields);
   det.build(p, walls);
   wall_driver.mark_build();
+  // One accumulator for all passes (its per-thread copies are allocated once); rebound if the
+  // particle views are ever reallocated.
+  ForceSums<T, Device> sums(p);
+  PhaseTimer phases(opt.phase_times);
 
   ContactOutputs<T, Device> pair_out, wall_out;
   auto size_outputs = [&]() {
@@ -282,17 +291,27 @@ RunSummary run_scene(const Scene& scene, const RunOptions& opt) {
 
   // Forces are zeroed by kick_drift (and are zero on allocation before the first pass).
   // `step`: the step whose forces these are (for contacts.csv).
+  // Phases (--phase-times): force (hooks, both lists, sums.end()), output (contacts.csv),
+  // growth (after_forces).
   auto force_pass = [&](T step_dt, bool with_outputs, std::int64_t step) {
     F::before_forces(model, p, step_dt);
     if (with_outputs) size_outputs();
+    if (!sums.bound_to(p)) sums = ForceSums<T, Device>(p);
     const ContactOutputs<T, Device> none{};
-    compute_pair_forces(model, p, det.pairs, det.pair_history, step_dt, with_outputs ? pair_out : none);
-    if (nw > 0) compute_wall_forces(model, p, walls, det.walls, det.wall_history, step_dt, with_outputs ? wall_out : none);
-    if (with_outputs && contacts_csv)  // before after_forces: the geometry the force pass saw
+    sums.begin();
+    compute_pair_forces(model, p, det.pairs, det.pair_history, step_dt, sums, with_outputs ? pair_out : none);
+    if (nw > 0)
+      compute_wall_forces(model, p, walls, det.walls, det.wall_history, step_dt, sums, with_outputs ? wall_out : none);
+    sums.end();
+    phases.lap(Phase::force);
+    if (with_outputs && contacts_csv) {  // before after_forces: the geometry the force pass saw
       contacts_csv->write(step, step * scene.run.dt,
                           collect_contacts<F>(model, p, walls, det.pairs, det.pair_history, det.walls,
                                               det.wall_history, pair_out, wall_out));
+      phases.lap(Phase::output);
+    }
     F::after_forces(model, p, step_dt);
+    phases.lap(Phase::growth);
   };
   auto write_particles = [&](std::int64_t step) {
     auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.x);
@@ -314,7 +333,7 @@ RunSummary run_scene(const Scene& scene, const RunOptions& opt) {
     std::vector<std::string> names;
     for (const auto& w : scene.walls) names.push_back(w.name);
     return names;
-  }(), any_driven);
+  }(), any_driven, scene.box.enabled);
   double active_sum = 0;
   std::int64_t samples = 0;
   auto write_sample = [&](std::int64_t step) {
@@ -324,6 +343,7 @@ RunSummary run_scene(const Scene& scene, const RunOptions& opt) {
     sample_state(p, driven, any_driven, g, det.pairs, det.walls, pair_out, wall_out, nw, s);
     s.wall_displacement.resize(nw);
     for (int k = 0; k < nw; ++k) s.wall_displacement[k] = wall_driver.normal_displacement(k);
+    for (int d = 0; d < 3; ++d) s.box_edge[d] = box.edge()[d];
     csv.write(s);
     if (particles_csv) write_particles(step);
     active_sum += static_cast<double>(s.pair_contacts + s.wall_contacts);
@@ -342,26 +362,36 @@ RunSummary run_scene(const Scene& scene, const RunOptions& opt) {
   double list_steps = 0;
   const std::int64_t builds0 = det.builds;
   const auto loop_start = clock::now();
+  phases.start();
   bool full_step_velocities = true;  // v is at a whole step (after a closing half kick)
   for (std::int64_t step = 1; step <= steps; ++step) {
     driven_motion.advance(p, (step - 1) * scene.run.dt, scene.run.dt);
+    // [box.deform] remap x, before the drift: the rebuild measure below sees it as displacement
+    box.deform_to(p, step);
     // closing half kick of the previous step (if deferred) + opening half kick + drift
     const T shift = kick_drift(p, driven, g, full_step_velocities ? half_dt : dt, dt, det.reference_positions(),
                                det.reference_radii());
     wall_driver.advance((step - 1) * scene.run.dt, scene.run.dt);
+    phases.lap(Phase::integration);
     if (det.needs_rebuild(shift, T(wall_driver.max_shift_since_build()))) {
-      det.build(p, walls);
+      box.wrap(p);  // then detect() records the wrapped positions as the reference: a wrap is no motion
+      det.detect(p, walls);
       wall_driver.mark_build();
+      phases.lap(Phase::detection);
+      det.remap(p);
+      phases.lap(Phase::remap);
     }
     const bool output = step % every == 0 || step == steps;
     force_pass(dt, output, step);
     full_step_velocities = output;
     if (output) {
       half_kick(p, driven, g, half_dt);  // closing half kick now: samples need whole-step velocities
+      phases.lap(Phase::integration);
       write_sample(step);
     }
     list_steps += det.pairs.count + det.walls.count;
     progress.update(step, list_steps);
+    phases.lap(Phase::output);
   }
   Kokkos::fence();
   sum.wall_time_s = std::chrono::duration<double>(clock::now() - loop_start).count();
@@ -374,7 +404,10 @@ RunSummary run_scene(const Scene& scene, const RunOptions& opt) {
   if (sum.wall_time_s > 0) {
     sum.contact_steps_per_second = list_steps / sum.wall_time_s;
     sum.active_contact_steps_per_second = sum.contacts_mean * steps / sum.wall_time_s;
+    sum.particle_steps_per_second = static_cast<double>(sum.particles) * static_cast<double>(steps) / sum.wall_time_s;
   }
+  if (phases.enabled()) sum.phases = phases.results();
+  if (scene.box.enabled) sum.box_edge.assign(box.edge().begin(), box.edge().end());
   F::report(model, sum);
   write_summary_json(sum.summary_path, sum);
   if (info) {
@@ -383,6 +416,11 @@ RunSummary run_scene(const Scene& scene, const RunOptions& opt) {
                 "active), %lld rebuilds\n",
                 static_cast<long long>(steps), sum.wall_time_s, sum.setup_time_s, sum.contact_steps_per_second,
                 sum.contacts_mean, static_cast<long long>(sum.rebuilds));
+    if (phases.enabled()) {
+      std::printf("phases [s]:");
+      for (const auto& kv : sum.phases) std::printf(" %s %.3f", kv.first.c_str(), kv.second);
+      std::printf("\n");
+    }
     std::printf("wrote %s and %s\n", sum.timeseries_path.c_str(), sum.summary_path.c_str());
   }
   return sum;

@@ -19,6 +19,7 @@ struct Sample {
   std::vector<double> wall_force;         // per wall: sum of normal contact forces [N], > 0 pressing
   std::vector<double> wall_displacement;  // per wall: displacement along its normal since t = 0 [m]
   std::array<double, 3> driven_force{0, 0, 0};  // contact force on the driven particles [N]
+  std::array<double, 3> box_edge{0, 0, 0};      // box edges [m] (columns only with a [box])
 };
 
 }  // namespace driver

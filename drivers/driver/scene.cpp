@@ -354,6 +354,88 @@ void parse_particles(TableReader& top, Scene& s) {
     fill.velocity = f.vec3("velocity", Vec3d{0, 0, 0});
     f.finish();
   }
+  if (const toml::table* lt = r.table("lattice")) {
+    TableReader l(*lt, "particles.lattice");
+    LatticeSpec& lat = s.lattice;
+    lat.enabled = true;
+    const std::string type = l.string("type").value_or("fcc");
+    if (type != "fcc") throw SceneError("particles.lattice.type = \"" + type + "\" is not valid (valid: \"fcc\")" + line_of(*lt));
+    lat.a = l.number("a", 0.0, Bound::open, kInf, Bound::open, std::nullopt);
+    const toml::array* cells = l.array("cells");
+    if (!cells || cells->size() != 3)
+      throw SceneError(std::string("particles.lattice.cells ") + (cells ? "must be an array of three integers [nx, ny, nz]"
+                                                                        : "is missing (required; three integers [nx, ny, nz] >= 1)") + line_of(*lt));
+    for (int d = 0; d < 3; ++d) {
+      const toml::node& n = *cells->get(d);
+      const std::string w = "particles.lattice.cells[" + std::to_string(d) + "]";
+      auto i = n.as_integer();
+      if (!i) throw SceneError(w + " must be an integer, got " + type_name(n) + line_of(n));
+      if (i->get() < 1 || i->get() > 100000)
+        throw SceneError(w + " = " + std::to_string(i->get()) + " is outside the valid range [1, 100000]" + line_of(n));
+      lat.cells[d] = i->get();
+    }
+    if (lat.count() > 100000000)
+      throw SceneError("particles.lattice.cells gives " + std::to_string(lat.count()) +
+                       " particles, outside the valid range [4, 100000000]" + line_of(*lt));
+    lat.origin = l.vec3("origin", s.box.enabled ? s.box.lo : Vec3d{0, 0, 0});
+    lat.radius_min = l.number("radius_min", 0.0, Bound::open, kInf, Bound::open, std::nullopt);
+    lat.radius_max = l.number("radius_max", lat.radius_min, Bound::closed, kInf, Bound::open, lat.radius_min);
+    lat.material = material_of(l, "material", s);
+    lat.seed = static_cast<std::uint64_t>(l.integer("seed", 0, std::numeric_limits<std::int64_t>::max(), 1));
+    lat.jitter = l.number("jitter", 0.0, Bound::closed, kInf, Bound::open, 0.0);
+    lat.velocity = l.vec3("velocity", Vec3d{0, 0, 0});
+    l.finish();
+  }
+  r.finish();
+}
+
+void parse_box(TableReader& top, Scene& s) {
+  const toml::table* bt = top.table("box");
+  if (!bt) return;
+  TableReader r(*bt, "box");
+  BoxSpec& b = s.box;
+  b.enabled = true;
+  b.lo = r.vec3("lo", std::nullopt);
+  b.hi = r.vec3("hi", std::nullopt);
+  for (int d = 0; d < 3; ++d)
+    if (!(b.hi[d] > b.lo[d])) {
+      std::ostringstream m;
+      m << "box.hi[" << d << "] = " << b.hi[d] << " is outside the valid range (box.lo[" << d << "] = " << b.lo[d]
+        << ", inf)" << line_of(*bt);
+      throw SceneError(m.str());
+    }
+  if (const toml::array* per = r.array("periodic")) {
+    if (per->size() != 3)
+      throw SceneError("box.periodic must be an array of three booleans [x, y, z], got an array of " +
+                       std::to_string(per->size()) + line_of(*bt));
+    for (int d = 0; d < 3; ++d) {
+      const toml::node& n = *per->get(d);
+      auto v = n.as_boolean();
+      if (!v) throw SceneError("box.periodic[" + std::to_string(d) + "] must be true or false, got " + type_name(n) + line_of(n));
+      b.periodic[d] = v->get();
+    }
+  }
+  if (const toml::table* dt = r.table("deform")) {
+    TableReader dr(*dt, "box.deform");
+    b.deform = true;
+    b.scale = dr.vec3("scale", std::nullopt);
+    b.deform_steps = dr.integer("steps", 1, 1000000000000LL, std::nullopt);
+    dr.finish();
+    static const char* axis = "xyz";
+    for (int d = 0; d < 3; ++d) {
+      std::ostringstream m;
+      if (!(b.scale[d] > 0.0)) {
+        m << "box.deform.scale[" << d << "] = " << b.scale[d] << " is outside the valid range (0, inf)" << line_of(*dt);
+        throw SceneError(m.str());
+      }
+      if (b.scale[d] != 1.0 && !b.periodic[d]) {
+        m << "box.deform.scale[" << d << "] = " << b.scale[d] << " deforms the non-periodic axis " << axis[d]
+          << " (box.periodic[" << d << "] = false); valid: 1 on non-periodic axes (deform only periodic axes)"
+          << line_of(*dt);
+        throw SceneError(m.str());
+      }
+    }
+  }
   r.finish();
 }
 
@@ -401,14 +483,56 @@ void parse_run(TableReader& top, Scene& s) {
   r.finish();
 }
 
+// Walls only bound non-periodic axes: a plane with a normal component along a periodic axis
+// would cut the box where the particles' images continue.
+void check_walls_in_box(const Scene& s) {
+  if (!s.box.enabled) return;
+  static const char* axis = "xyz";
+  for (std::size_t k = 0; k < s.walls.size(); ++k)
+    for (int d = 0; d < 3; ++d)
+      if (s.box.periodic[d] && s.walls[k].normal[d] != 0.0) {
+        const Vec3d& n = s.walls[k].normal;
+        std::ostringstream m;
+        m << "walls[" << k << "].normal = [" << n[0] << ", " << n[1] << ", " << n[2] << "] (normalised) has a component "
+          << "along the periodic axis " << axis[d] << " (box.periodic[" << d << "] = true); valid: normal[" << d
+          << "] = 0 (walls only on non-periodic axes)";
+        throw SceneError(m.str());
+      }
+}
+
+// The minimum image is the right one, and the cell list finds each pair once, while every
+// interaction distance (2 R_max + skin; MDR radius growth: R_max x radius_cap) stays below half
+// of every periodic edge, the smallest one a deformation reaches included.
+void check_periodic_lengths(const Scene& s) {
+  if (!s.box.enabled || !s.box.any_periodic()) return;
+  double rmax = s.max_radius();
+  if (s.model.name == "mdr" && (s.model.effects & kRadiusGrowth)) rmax *= s.model.params.at("radius_cap");
+  const double reach = 2.0 * rmax + s.run.skin;
+  static const char* axis = "xyz";
+  for (int d = 0; d < 3; ++d) {
+    if (!s.box.periodic[d]) continue;
+    const double L = s.box.min_edge(d);
+    if (L < 2.0 * reach) {
+      std::ostringstream m;
+      m << "box: the periodic edge along " << axis[d] << " (box.hi[" << d << "] - box.lo[" << d << "]"
+        << (s.box.deform ? " x min(1, box.deform.scale[" + std::to_string(d) + "])" : std::string()) << ") = " << L
+        << " m is outside the valid range [2 x (2 R_max + skin) = " << 2.0 * reach << " m, inf) (R_max = " << rmax
+        << " m" << (s.model.name == "mdr" && (s.model.effects & kRadiusGrowth) ? " incl. model.radius_cap" : "")
+        << ", run.skin = " << s.run.skin << " m): the minimum image would be ambiguous";
+      throw SceneError(m.str());
+    }
+  }
+}
+
 // Cross-checks after every table is read, then the derived quantities.
 void finish_scene(Scene& s) {
   std::set<int> pm, wm;
   for (const auto& p : s.particles) pm.insert(p.material);
   if (s.fill.enabled && s.fill.count > 0) pm.insert(s.fill.material);
+  if (s.lattice.enabled) pm.insert(s.lattice.material);
   for (const auto& w : s.walls) wm.insert(w.material);
   if (pm.empty() && !s.fill.enabled)
-    throw SceneError("particles: no particles (give [[particles.list]] entries or [particles.fill])");
+    throw SceneError("particles: no particles (give [[particles.list]] entries, [particles.fill] or [particles.lattice])");
   for (int m : pm) {
     const Material& mat = s.materials[m];
     if (!(mat.density > 0.0) || !std::isfinite(mat.density))
@@ -427,9 +551,17 @@ void finish_scene(Scene& s) {
                          " (walls) are both rigid: two rigid bodies cannot be in contact");
   }
 
-  if (!s.allow_overlap) check_no_overlap(s.particles);
+  const bool periodic = s.box.enabled && s.box.any_periodic();
+  if (periodic) wrap_into_box(s.box, s.particles);  // the listed particles, before the fill avoids them
+  if (!s.allow_overlap && !periodic) check_no_overlap(s.particles);
   fill_box(s.fill, s.particles);
+  fill_lattice(s.lattice, s.particles);
+  if (periodic) wrap_into_box(s.box, s.particles);
+  // Periodic: one check over everything, images across the faces included. A lattice next to
+  // other particles: the lattice itself does not avoid them.
+  if (!s.allow_overlap && (periodic || s.lattice.enabled)) check_no_overlap(s.particles, periodic ? &s.box : nullptr);
   if (s.particles.empty()) throw SceneError("particles: no particles (particles.fill.count = 0 and no list)");
+  check_walls_in_box(s);
 
   if (s.run.output_interval == 0) s.run.output_interval = std::max<std::int64_t>(1, s.run.steps / 100);
 
@@ -473,6 +605,7 @@ void finish_scene(Scene& s) {
       << "max(0.2 x the smallest radius, 1.25 x the adhesive range))";
     throw SceneError(m.str());
   }
+  check_periodic_lengths(s);
 }
 
 Scene parse_table(const toml::table& root, const std::string& source) {
@@ -482,6 +615,7 @@ Scene parse_table(const toml::table& root, const std::string& source) {
   s.description = top.string("description").value_or("");
   parse_materials(top, s);  // first: the others refer to materials by name
   parse_model(top, s);
+  parse_box(top, s);  // before the particles: the lattice origin defaults to box.lo
   parse_particles(top, s);
   parse_walls(top, s);
   s.gravity = top.vec3("gravity", Vec3d{0, 0, 0});

@@ -5,6 +5,7 @@
 #include <epac/params/material.hpp>
 #include <epac/params/validation.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <map>
@@ -69,6 +70,48 @@ struct FillSpec {
   Vec3d velocity{0, 0, 0};
 };
 
+// fcc lattice fill ([particles.lattice]): 4 atoms per cubic cell of edge a at (0,0,0),
+// (.5,.5,0), (.5,0,.5), (0,.5,.5) a, cells looped z, y, x then the basis (LAMMPS create_atoms
+// order); radii uniform in [radius_min, radius_max] and a uniform jitter in [-jitter, jitter]
+// per coordinate, drawn in that order per atom from one seeded stream.
+struct LatticeSpec {
+  bool enabled = false;
+  double a = 0;                        // cubic cell edge [m]
+  std::array<std::int64_t, 3> cells{0, 0, 0};
+  Vec3d origin{0, 0, 0};               // corner of cell (0,0,0) [m]
+  double radius_min = 0, radius_max = 0;
+  int material = 0;
+  std::uint64_t seed = 1;
+  double jitter = 0;                   // [m]
+  Vec3d velocity{0, 0, 0};
+  std::int64_t count() const { return 4 * cells[0] * cells[1] * cells[2]; }
+};
+
+// The simulation box ([box]): periodic axes wrap (minimum image, cell list across the faces);
+// an affine deformation ([box.deform], LAMMPS `fix deform ... scale ... remap x`) scales the
+// periodic edges about the box centre, linearly in the step number up to `deform_steps`.
+struct BoxSpec {
+  bool enabled = false;
+  Vec3d lo{0, 0, 0}, hi{0, 0, 0};      // [m]
+  std::array<bool, 3> periodic{false, false, false};
+  bool deform = false;
+  Vec3d scale{1, 1, 1};                // final edge / initial edge (1 on axes not deformed)
+  std::int64_t deform_steps = 0;
+
+  bool any_periodic() const { return periodic[0] || periodic[1] || periodic[2]; }
+  double edge0(int d) const { return hi[d] - lo[d]; }
+  double centre(int d) const { return 0.5 * (lo[d] + hi[d]); }
+  // Edge along d after `step` steps: linear from edge0 (step 0) to scale x edge0 (step >=
+  // deform_steps), then held.
+  double edge(int d, std::int64_t step) const {
+    if (!deform || deform_steps <= 0) return edge0(d);
+    const double f = step >= deform_steps ? 1.0 : static_cast<double>(step) / static_cast<double>(deform_steps);
+    return edge0(d) * (1.0 + (scale[d] - 1.0) * f);
+  }
+  // Smallest edge the run reaches along d.
+  double min_edge(int d) const { return deform ? edge0(d) * std::min(1.0, scale[d]) : edge0(d); }
+};
+
 struct ModelSpec {
   std::string name = "hertz_mindlin";
   std::map<std::string, double> params;  // model-specific keys (model_registry.cpp lists them)
@@ -95,6 +138,8 @@ struct Scene {
   ModelSpec model;
   std::vector<ParticleSpec> particles;  // the explicit list, then the fill
   FillSpec fill;
+  LatticeSpec lattice;
+  BoxSpec box;
   bool allow_overlap = false;
   std::vector<WallSpec> walls;
   Vec3d gravity{0, 0, 0};

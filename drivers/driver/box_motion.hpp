@@ -1,0 +1,95 @@
+#pragma once
+// The periodic box of a run ([box] in the scene): sets Particles::box for the kernels, wraps
+// positions into the box at rebuilds, and applies the affine deformation of [box.deform].
+//  - Wrapping happens only at rebuilds (as LAMMPS wraps only when it re-neighbours): between
+//    rebuilds a particle leaves the box by at most skin/2, so raw separations stay well inside
+//    the (-1.5 L, 1.5 L) that PeriodicBox::minimum_image assumes. The driver wraps first and
+//    then records the rebuild rule's reference positions, so a wrap never counts as motion.
+//  - Deformation (LAMMPS `fix deform ... scale s ... remap x`): the edge along a deformed axis is
+//    L(k) = L0 (1 + (s - 1) min(k, N) / N) at step k, about the fixed box centre c; at each step
+//    the positions are mapped affinely, x' = c + (L(k) / L(k-1)) (x - c), velocities untouched.
+//    The map runs before the drift of the step, so the rebuild measure (|x - x_build|) sees it
+//    like any other displacement: the lists stay complete (LAMMPS checks the same way).
+//    Box edge at step k's force pass: L(k). (LAMMPS deforms at the end of a step, so its force
+//    pass of step k sees L(k-1): one step apart, 2.4e-4 of the strain per step here.)
+// Edges are kept on the host in double and copied into p.box (T) when they change.
+#include "driver/scene.hpp"
+
+#include <epac/state/particles.hpp>
+
+#include <array>
+#include <cstdint>
+
+namespace epac {
+namespace driver {
+
+template <class T, class Device>
+class BoxMotion {
+ public:
+  explicit BoxMotion(const BoxSpec& spec) : spec_(spec) {
+    for (int d = 0; d < 3; ++d) edge_[d] = spec.enabled ? spec.edge0(d) : 0.0;
+  }
+
+  bool enabled() const { return spec_.enabled; }
+  bool periodic() const { return spec_.enabled && spec_.any_periodic(); }
+  // Current edges [m] (the scene's box; zeros without a box).
+  const std::array<double, 3>& edge() const { return edge_; }
+
+  // Writes the periodic axes into p.box (non-periodic axes keep length 0: not periodic).
+  void apply(Particles<T, Device>& p) const {
+    T lo[3] = {T(0), T(0), T(0)}, len[3] = {T(0), T(0), T(0)};
+    for (int d = 0; d < 3; ++d)
+      if (spec_.enabled && spec_.periodic[d]) {
+        lo[d] = T(spec_.centre(d) - 0.5 * edge_[d]);
+        len[d] = T(edge_[d]);
+      }
+    p.box.lo = Vec3<T>(lo[0], lo[1], lo[2]);
+    p.box.length = Vec3<T>(len[0], len[1], len[2]);
+  }
+
+  // Wraps positions into [lo, lo + L) along the periodic axes (at a rebuild).
+  void wrap(const Particles<T, Device>& p) const {
+    if (!periodic()) return;
+    const PeriodicBox<T> box = p.box;
+    auto x = p.x;
+    Kokkos::parallel_for("epac::driver::wrap_positions", Kokkos::RangePolicy<exec>(0, p.n), KOKKOS_LAMBDA(int i) {
+      x(i, 0) = PeriodicBox<T>::wrap(x(i, 0), box.lo.x, box.length.x);
+      x(i, 1) = PeriodicBox<T>::wrap(x(i, 1), box.lo.y, box.length.y);
+      x(i, 2) = PeriodicBox<T>::wrap(x(i, 2), box.lo.z, box.length.z);
+    });
+  }
+
+  // Deforms the box to its edges at `step` and maps the positions affinely (remap x). Returns
+  // whether anything changed.
+  bool deform_to(Particles<T, Device>& p, std::int64_t step) {
+    if (!spec_.enabled || !spec_.deform) return false;
+    std::array<double, 3> next;
+    T ratio[3], centre[3];
+    bool changed = false;
+    for (int d = 0; d < 3; ++d) {
+      next[d] = spec_.edge(d, step);
+      ratio[d] = T(next[d] / edge_[d]);
+      centre[d] = T(spec_.centre(d));
+      if (next[d] != edge_[d]) changed = true;
+    }
+    if (!changed) return false;
+    edge_ = next;
+    apply(p);
+    auto x = p.x;
+    const T r0 = ratio[0], r1 = ratio[1], r2 = ratio[2], c0 = centre[0], c1 = centre[1], c2 = centre[2];
+    Kokkos::parallel_for("epac::driver::remap_x", Kokkos::RangePolicy<exec>(0, p.n), KOKKOS_LAMBDA(int i) {
+      x(i, 0) = c0 + r0 * (x(i, 0) - c0);
+      x(i, 1) = c1 + r1 * (x(i, 1) - c1);
+      x(i, 2) = c2 + r2 * (x(i, 2) - c2);
+    });
+    return true;
+  }
+
+ private:
+  using exec = typename Device::execution_space;
+  const BoxSpec& spec_;
+  std::array<double, 3> edge_{0, 0, 0};
+};
+
+}  // namespace driver
+}  // namespace epac

@@ -1,0 +1,497 @@
+// Periodic boxes, affine box deformation and the fcc lattice fill of the driver:
+//  - the periodic cell list finds exactly the pairs of an O(N^2) minimum-image search (particles
+//    at every face, edge and corner, some just outside the box as between wraps; 2 and >= 3
+//    cells along an axis);
+//  - a contact across a periodic face gives the same forces as the same pair inside the box;
+//  - [box.deform]: the edge after k steps and the affine positions (remap x); a particle
+//    crossing a face keeps moving as in an unbounded domain (wrap at rebuilds);
+//  - [particles.lattice]: count, positions, no overlaps, same radii for a seed;
+//  - the new keys' rejections; --phase-times and particle_steps_per_second in the summary.
+#include <backends.hpp>
+#include <catch2/catch.hpp>
+
+#include "driver/contact_detection.hpp"
+#include "driver/model_registry.hpp"
+#include "driver/scene.hpp"
+#include "driver_test_util.hpp"
+
+#include <cmath>
+#include <random>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+using namespace epac;
+using namespace epac::driver;
+
+namespace {
+
+struct HostPacking {
+  std::vector<double> x[3], r;
+  int n() const { return static_cast<int>(r.size()); }
+};
+
+// Random positions in [0, L)^3 plus particles at every face, edge and corner (just inside and
+// just outside: positions between two wraps), radii in [r0, r1].
+HostPacking periodic_packing(int n, double L, double r0, double r1, double skin, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  HostPacking h;
+  for (int i = 0; i < n; ++i) {
+    for (int d = 0; d < 3; ++d) h.x[d].push_back(L * u(rng));
+    h.r.push_back(r0 + (r1 - r0) * u(rng));
+  }
+  // 3^3 - 1 face/edge/corner spots, each at 0 + e and L - e (e in (-skin/4, skin/4)).
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b)
+      for (int c = 0; c < 3; ++c) {
+        if (a == 1 && b == 1 && c == 1) continue;
+        const int k[3] = {a, b, c};
+        for (int side = 0; side < 2; ++side) {
+          for (int d = 0; d < 3; ++d) {
+            const double e = (u(rng) - 0.5) * 0.5 * skin;
+            const double at = k[d] == 1 ? L * u(rng) : (k[d] == 0 ? e : L + e);
+            h.x[d].push_back(at);
+          }
+          h.r.push_back(r0 + (r1 - r0) * u(rng));
+        }
+      }
+  return h;
+}
+
+template <class D>
+Particles<double, D> to_device(const HostPacking& h, double L) {
+  Particles<double, D> p(h.n());
+  auto x = Kokkos::create_mirror_view(p.x);
+  auto r = Kokkos::create_mirror_view(p.radius);
+  auto g = Kokkos::create_mirror_view(p.gid);
+  for (int i = 0; i < h.n(); ++i) {
+    for (int d = 0; d < 3; ++d) x(i, d) = h.x[d][i];
+    r(i) = h.r[i];
+    g(i) = i;
+  }
+  Kokkos::deep_copy(p.x, x);
+  Kokkos::deep_copy(p.radius, r);
+  Kokkos::deep_copy(p.gid, g);
+  p.box.lo = Vec3<double>(0, 0, 0);
+  p.box.length = Vec3<double>(L, L, L);
+  return p;
+}
+
+double image(double s, double L) { return s - L * std::round(s / L); }
+
+std::set<std::pair<int, int>> brute_force_periodic(const HostPacking& h, double L, double skin) {
+  std::set<std::pair<int, int>> s;
+  for (int i = 0; i < h.n(); ++i)
+    for (int j = i + 1; j < h.n(); ++j) {
+      double d2 = 0;
+      for (int d = 0; d < 3; ++d) {
+        const double s1 = image(h.x[d][i] - h.x[d][j], L);
+        d2 += s1 * s1;
+      }
+      const double cut = h.r[i] + h.r[j] + skin;
+      if (d2 < cut * cut) s.insert({i, j});
+    }
+  return s;
+}
+
+driver::RunSummary run_text(const std::string& text, const std::filesystem::path& dir, bool phase_times = false) {
+  driver::RunOptions opt;
+  opt.out_dir = dir.string();
+  opt.quiet = true;
+  opt.phase_times = phase_times;
+  return driver::run(driver::parse_scene_string(text, "test.toml"), opt);
+}
+
+const std::string kBead = R"(
+[materials.bead]
+youngs_modulus = 1.0e7
+poisson_ratio = 0.3
+density = 1000.0
+restitution = 0.5
+friction = 0.3
+)";
+
+// A CSV with a header line as rows of numbers (string columns are read as NaN).
+std::vector<std::vector<double>> csv_rows(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::vector<double>> rows;
+  while (std::getline(in, line)) {
+    std::vector<double> row;
+    std::stringstream s(line);
+    std::string c;
+    while (std::getline(s, c, ',')) row.push_back(c.empty() ? NAN : std::stod(c));
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+}  // namespace
+
+TEMPLATE_LIST_TEST_CASE("the periodic cell list finds exactly the pairs of an O(N^2) minimum-image search",
+                        "[driver][detection][periodic]", test::Backends) {
+  using D = TestType;
+  const double r0 = 0.8e-3, r1 = 1.2e-3, skin = 0.2e-3;
+  const double reach = 2.0 * r1 + skin;
+  double L = 0;
+  int n = 0;
+  SECTION("many cells per axis") {
+    L = 9.3 * reach;
+    n = 2500;
+  }
+  SECTION("2 cells per axis (the -1 and +1 neighbours are one cell)") {
+    L = 2.4 * reach;
+    n = 60;
+  }
+  const HostPacking h = periodic_packing(n, L, r0, r1, skin, 5);
+  const auto p = to_device<D>(h, L);
+  const CellList<double, D> cells = build_cell_list(p, reach);
+  if (L < 3 * reach) CHECK(cells.nx == 2);
+  const ContactList<D> list = find_pairs(p, cells, skin);
+  const auto expected = brute_force_periodic(h, L, skin);
+  auto a = test::to_host(list.first);
+  auto b = test::to_host(list.second);
+  std::set<std::pair<int, int>> found;
+  for (int k = 0; k < list.count; ++k) {
+    REQUIRE(a(k) < b(k));
+    found.insert({a(k), b(k)});
+  }
+  CHECK(static_cast<std::size_t>(list.count) == found.size());  // each pair exactly once
+  CHECK(found == expected);
+  // across-face pairs are there (the test would be vacuous without them)
+  int across = 0;
+  for (const auto& pr : expected)
+    for (int d = 0; d < 3; ++d)
+      if (std::fabs(h.x[d][pr.first] - h.x[d][pr.second]) > 0.5 * L) {
+        ++across;
+        break;
+      }
+  CHECK(across > 0);
+}
+
+TEST_CASE("a contact across a periodic face gives the same forces as inside the box", "[driver][periodic]") {
+  // Two spheres (R = 1 mm) overlapping by 0.1 mm, approaching at 0.01 m/s each along x, with a
+  // tangential velocity: once across the face x = 0 / x = L, once in the middle of the box.
+  auto scene = [](double xa, double xb) {
+    return kBead + R"(
+[box]
+lo = [0.0, 0.0, 0.0]
+hi = [0.01, 0.01, 0.01]
+periodic = [true, false, false]
+
+[particles]
+allow_overlap = true
+
+[[particles.list]]
+position = [)" + std::to_string(xa) + R"(, 0.005, 0.005]
+radius = 0.001
+material = "bead"
+velocity = [0.01, 0.002, 0.0]
+
+[[particles.list]]
+position = [)" + std::to_string(xb) + R"(, 0.005, 0.005]
+radius = 0.001
+material = "bead"
+velocity = [-0.01, 0.0, 0.0]
+
+[run]
+dt = 1.0e-6
+steps = 40
+output_interval = 10
+contact_output = true
+particle_output = true
+)";
+  };
+  // gap 1.9 mm: a at L - 0.95 mm, b at 0.95 mm (across); a at 4.05 mm, b at 5.95 mm (inside).
+  const auto d1 = test::fresh_out_dir("across");
+  const auto d2 = test::fresh_out_dir("inside");
+  run_text(scene(0.01 - 0.00095, 0.00095), d1);
+  run_text(scene(0.00405, 0.00595), d2);
+  const auto c1 = csv_rows(d1 / "contacts.csv");
+  const auto c2 = csv_rows(d2 / "contacts.csv");
+  REQUIRE(c1.size() == 5);  // steps 0, 10, 20, 30, 40
+  REQUIRE(c1.size() == c2.size());
+  for (std::size_t k = 0; k < c1.size(); ++k) {
+    CHECK(c1[k][6] == Approx(c2[k][6]).epsilon(1e-9));  // overlap
+    CHECK(c1[k][7] == Approx(c2[k][7]).epsilon(1e-9));  // normal force
+    CHECK(c1[k][7] > 0);
+  }
+  const auto t1 = test::read_csv_columns(d1 / "timeseries.csv");
+  const auto t2 = test::read_csv_columns(d2 / "timeseries.csv");
+  for (std::size_t k = 0; k < t1.at("step").size(); ++k) {
+    CHECK(t1.at("ke_translational")[k] == Approx(t2.at("ke_translational")[k]).epsilon(1e-9));
+    CHECK(t1.at("ke_rotational")[k] == Approx(t2.at("ke_rotational")[k]).epsilon(1e-9));
+  }
+  std::filesystem::remove_all(d1);
+  std::filesystem::remove_all(d2);
+}
+
+TEST_CASE("box deformation: edge after k steps, affine positions, held after the last step", "[driver][periodic][deform]") {
+  // Spheres far apart at rest (no contacts, no gravity): positions move only with the box.
+  const double L0 = 0.02, lo = -0.004;
+  const std::string text = kBead + R"(
+[box]
+lo = [-0.004, -0.004, -0.004]
+hi = [0.016, 0.016, 0.016]
+periodic = [true, true, false]
+
+[box.deform]
+scale = [0.5, 1.5, 1.0]
+steps = 10
+
+[[particles.list]]
+position = [-0.003, 0.0, 0.0]
+radius = 0.0005
+material = "bead"
+
+[[particles.list]]
+position = [0.010, 0.0151, 0.012]
+radius = 0.0005
+material = "bead"
+
+[[particles.list]]
+position = [0.004, 0.006, 0.004]
+radius = 0.0005
+material = "bead"
+
+[run]
+dt = 1.0e-4
+steps = 14
+output_interval = 1
+particle_output = true
+)";
+  const auto dir = test::fresh_out_dir("deform");
+  const auto sum = run_text(text, dir);
+  const auto t = test::read_csv_columns(dir / "timeseries.csv");
+  REQUIRE(t.at("step").size() == 15);
+  const double c = lo + 0.5 * L0;
+  const double scale[3] = {0.5, 1.5, 1.0};
+  const char* cols[3] = {"box_lx", "box_ly", "box_lz"};
+  for (int k = 0; k <= 14; ++k) {
+    const double f = std::min(k, 10) / 10.0;
+    for (int d = 0; d < 3; ++d) CHECK(t.at(cols[d])[k] == Approx(L0 * (1.0 + (scale[d] - 1.0) * f)).epsilon(1e-9));
+  }
+  REQUIRE(sum.box_edge.size() == 3);
+  CHECK(sum.box_edge[0] == Approx(0.5 * L0));
+  CHECK(sum.box_edge[1] == Approx(1.5 * L0));
+  CHECK(sum.box_edge[2] == Approx(L0));
+  // particles.csv: step, time, id, x, y, z, ...; x' = c + (L(k)/L0) (x0 - c) per axis
+  const double x0[3][3] = {{-0.003, 0.0, 0.0}, {0.010, 0.0151, 0.012}, {0.004, 0.006, 0.004}};
+  const auto rows = csv_rows(dir / "particles.csv");
+  REQUIRE(rows.size() == 15 * 3);
+  for (const auto& r : rows) {
+    const int k = static_cast<int>(r[0]), id = static_cast<int>(r[2]);
+    const double f = std::min(k, 10) / 10.0;
+    for (int d = 0; d < 3; ++d) {
+      const double ratio = 1.0 + (scale[d] - 1.0) * f;
+      CHECK(r[3 + d] == Approx(c + ratio * (x0[id][d] - c)).margin(1e-12));
+    }
+  }
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("a particle crossing a periodic face moves on as in an unbounded domain", "[driver][periodic]") {
+  // One sphere at 1 m/s along x through a 10 mm periodic box: 6 crossings in 60 mm; the skin
+  // (0.1 mm) forces a rebuild (and a wrap) every 50 steps. x(t) mod L must follow x0 + v t.
+  const std::string text = kBead + R"(
+[box]
+lo = [0.0, 0.0, 0.0]
+hi = [0.01, 0.01, 0.01]
+periodic = [true, true, true]
+
+[[particles.list]]
+position = [0.009, 0.005, 0.005]
+radius = 0.001
+material = "bead"
+velocity = [1.0, 0.0, 0.0]
+
+[[particles.list]]
+position = [0.004, 0.002, 0.002]
+radius = 0.001
+material = "bead"
+
+[run]
+dt = 1.0e-6
+steps = 6000
+skin = 1.0e-4
+output_interval = 100
+particle_output = true
+)";
+  const auto dir = test::fresh_out_dir("crossing");
+  const auto sum = run_text(text, dir);
+  CHECK(sum.rebuilds >= 100);
+  const auto rows = csv_rows(dir / "particles.csv");
+  int checked = 0;
+  for (const auto& r : rows) {
+    if (static_cast<int>(r[2]) != 0) continue;
+    const double t = r[1];
+    const double expect = std::fmod(0.009 + 1.0 * t, 0.01);
+    double x = r[3];
+    // wrapped only at rebuilds: within skin/2 outside the box
+    CHECK(x >= -0.5e-4 - 1e-9);
+    CHECK(x < 0.01 + 0.5e-4 + 1e-9);
+    CHECK(image(x - expect, 0.01) == Approx(0.0).margin(1e-9));
+    ++checked;
+  }
+  CHECK(checked == 61);
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("fcc lattice: count, positions, no overlaps, deterministic for a seed", "[driver][scene][lattice]") {
+  auto scene = [](const std::string& extra) {
+    return kBead + R"(
+[box]
+lo = [0.0, 0.0, 0.0]
+hi = [0.0113137084989848, 0.0084852813742386, 0.0084852813742386]
+periodic = [true, true, true]
+
+[particles.lattice]
+type = "fcc"
+a = 2.8284271247461903e-3
+cells = [4, 3, 3]
+radius_min = 0.94e-3
+radius_max = 0.99e-3
+material = "bead"
+)" + extra + R"(
+[run]
+dt = 1.0e-6
+steps = 1
+)";
+  };
+  const double a = 2.8284271247461903e-3;
+  const Scene s = parse_scene_string(scene("seed = 7\n"));
+  REQUIRE(s.particles.size() == 4u * 4 * 3 * 3);
+  // LAMMPS create_atoms order: cells z, y, x, then the basis
+  const double basis[4][3] = {{0, 0, 0}, {0.5, 0.5, 0}, {0.5, 0, 0.5}, {0, 0.5, 0.5}};
+  std::size_t k = 0;
+  for (int cz = 0; cz < 3; ++cz)
+    for (int cy = 0; cy < 3; ++cy)
+      for (int cx = 0; cx < 4; ++cx)
+        for (int b = 0; b < 4; ++b, ++k) {
+          const double cell[3] = {double(cx), double(cy), double(cz)};
+          for (int d = 0; d < 3; ++d) CHECK(s.particles[k].position[d] == Approx(a * (cell[d] + basis[b][d])).margin(1e-15));
+          CHECK(s.particles[k].radius >= 0.94e-3);
+          CHECK(s.particles[k].radius <= 0.99e-3);
+        }
+  // no overlaps, images included: nearest neighbours at 2R = a / sqrt(2) > R_i + R_j
+  const double L[3] = {4 * a, 3 * a, 3 * a};
+  double min_gap = 1.0;
+  for (std::size_t i = 0; i < s.particles.size(); ++i)
+    for (std::size_t j = i + 1; j < s.particles.size(); ++j) {
+      double d2 = 0;
+      for (int d = 0; d < 3; ++d) {
+        const double sd = image(s.particles[i].position[d] - s.particles[j].position[d], L[d]);
+        d2 += sd * sd;
+      }
+      min_gap = std::min(min_gap, std::sqrt(d2) - s.particles[i].radius - s.particles[j].radius);
+    }
+  CHECK(min_gap > 0.0);
+  // same seed: same radii; another seed: other radii
+  const Scene s2 = parse_scene_string(scene("seed = 7\n"));
+  const Scene s3 = parse_scene_string(scene("seed = 8\n"));
+  bool same = true, differ = false;
+  for (std::size_t i = 0; i < s.particles.size(); ++i) {
+    same = same && s.particles[i].radius == s2.particles[i].radius;
+    differ = differ || s.particles[i].radius != s3.particles[i].radius;
+  }
+  CHECK(same);
+  CHECK(differ);
+  // jitter: within +-jitter of the lattice site (wrapped into the box)
+  const Scene sj = parse_scene_string(scene("seed = 7\njitter = 5.0e-6\n"));
+  double max_dev = 0;
+  for (std::size_t i = 0; i < s.particles.size(); ++i)
+    for (int d = 0; d < 3; ++d) {
+      CHECK(sj.particles[i].position[d] >= 0.0);
+      CHECK(sj.particles[i].position[d] < L[d]);
+      max_dev = std::max(max_dev, std::fabs(image(sj.particles[i].position[d] - s.particles[i].position[d], L[d])));
+    }
+  CHECK(max_dev <= 5.0e-6);
+  CHECK(max_dev > 1.0e-6);
+}
+
+TEST_CASE("bad [box], [box.deform] and [particles.lattice] values are rejected", "[driver][scene][validation][periodic]") {
+  struct Case {
+    std::string box, lattice, walls, expect;
+  };
+  const std::string box_ok = "[box]\nlo = [0.0, 0.0, 0.0]\nhi = [0.02, 0.02, 0.02]\nperiodic = [true, true, false]\n";
+  const std::string lat_ok = "[particles.lattice]\na = 0.003\ncells = [6, 6, 2]\nradius_min = 0.001\nmaterial = \"bead\"\n";
+  const std::vector<Case> cases = {
+      {"[box]\nlo = [0.0, 0.0, 0.0]\nhi = [0.004, 0.02, 0.02]\nperiodic = [true, false, false]\n",
+       "[[particles.list]]\nposition = [0.002, 0.01, 0.01]\nradius = 0.001\nmaterial = \"bead\"\n", "",
+       "the periodic edge along x"},
+      {box_ok, lat_ok, "[[walls]]\npoint = [0, 0, 0]\nnormal = [1, 0, 1]\nmaterial = \"bead\"\n", "walls[0].normal"},
+      {box_ok + "[box.deform]\nscale = [0.9, 0.9, 0.9]\nsteps = 10\n", lat_ok, "", "box.deform.scale[2] = 0.9"},
+      {box_ok + "[box.deform]\nscale = [-0.9, 1.0, 1.0]\nsteps = 10\n", lat_ok, "", "box.deform.scale[0] = -0.9"},
+      {box_ok + "[box.deform]\nscale = [0.9, 1.0, 1.0]\nsteps = 0\n", lat_ok, "", "box.deform.steps = 0"},
+      {box_ok + "[box.deform]\nscale = [0.2, 1.0, 1.0]\nsteps = 10\n", lat_ok, "", "periodic edge along x"},
+      {box_ok + "[box.deform]\nscale = [0.9, 1.0, 1.0]\nsteps = 10\nrate = 2\n", lat_ok, "", "unknown key 'rate' in [box.deform]"},
+      {box_ok + "size = 3\n", lat_ok, "", "unknown key 'size' in [box]"},
+      {"[box]\nlo = [0.0, 0.0, 0.0]\nhi = [0.02, 0.0, 0.02]\n", lat_ok, "", "box.hi[1] = 0"},
+      {"[box]\nlo = [0.0, 0.0, 0.0]\nhi = [0.02, 0.02, 0.02]\nperiodic = [true, 1, false]\n", lat_ok, "", "box.periodic[1]"},
+      {box_ok, lat_ok + "type = \"bcc\"\n", "", "particles.lattice.type = \"bcc\""},
+      {box_ok, "[particles.lattice]\na = 0.003\ncells = [6, 0, 2]\nradius_min = 0.001\nmaterial = \"bead\"\n", "",
+       "particles.lattice.cells[1] = 0"},
+      {box_ok, lat_ok + "jitter = -1e-6\n", "", "particles.lattice.jitter"},
+      {box_ok, lat_ok + "spacing = 1\n", "", "unknown key 'spacing' in [particles.lattice]"},
+      {box_ok, "[particles.lattice]\na = 0.002\ncells = [6, 6, 2]\nradius_min = 0.001\nmaterial = \"bead\"\n", "",
+       "overlap"},
+  };
+  for (const auto& c : cases) {
+    const std::string text = kBead + c.box + "\n[particles]\n" + c.lattice + "\n" + c.walls + "\n[run]\ndt = 1e-6\nsteps = 1\n";
+    INFO(text);
+    try {
+      parse_scene_string(text);
+      FAIL("accepted: expected an error containing '" << c.expect << "'");
+    } catch (const SceneError& e) {
+      const std::string msg = e.what();
+      INFO(msg);
+      CHECK(msg.find(c.expect) != std::string::npos);
+    }
+  }
+  // the base of the cases is valid
+  CHECK_NOTHROW(parse_scene_string(kBead + box_ok + "\n[particles]\n" + lat_ok + "\n[run]\ndt = 1e-6\nsteps = 1\n"));
+}
+
+TEST_CASE("--phase-times fills summary phases; particle_steps_per_second is reported", "[driver][summary]") {
+  const std::string text = kBead + R"(
+[[particles.list]]
+position = [0.0, 0.0, 0.0]
+radius = 0.001
+material = "bead"
+
+[[particles.list]]
+position = [0.0025, 0.0, 0.0]
+radius = 0.001
+material = "bead"
+velocity = [-0.1, 0.0, 0.0]
+
+[run]
+dt = 1.0e-6
+steps = 50
+)";
+  const auto d1 = test::fresh_out_dir("phases");
+  const auto with = run_text(text, d1, true);
+  REQUIRE(with.phases.size() == 6);
+  const char* names[] = {"detection", "remap", "force", "growth", "integration", "output"};
+  for (int k = 0; k < 6; ++k) {
+    CHECK(with.phases[k].first == names[k]);
+    CHECK(with.phases[k].second >= 0.0);
+  }
+  CHECK(with.particle_steps_per_second > 0.0);
+  std::ifstream js(d1 / "summary.json");
+  const std::string json((std::istreambuf_iterator<char>(js)), std::istreambuf_iterator<char>());
+  CHECK(json.find("\"phases\"") != std::string::npos);
+  CHECK(json.find("\"particle_steps_per_second\"") != std::string::npos);
+  const auto d2 = test::fresh_out_dir("nophases");
+  const auto without = run_text(text, d2, false);
+  CHECK(without.phases.empty());
+  std::ifstream js2(d2 / "summary.json");
+  const std::string json2((std::istreambuf_iterator<char>(js2)), std::istreambuf_iterator<char>());
+  CHECK(json2.find("\"phases\"") == std::string::npos);
+  CHECK(json2.find("box_edge") == std::string::npos);  // no [box]
+  std::filesystem::remove_all(d1);
+  std::filesystem::remove_all(d2);
+}
