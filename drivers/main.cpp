@@ -30,6 +30,9 @@ int main(int argc, char** argv) {
   app.add_flag("--quiet", opt.quiet, "no informational output and no progress line");
   app.add_flag("--phase-times", opt.phase_times,
                "seconds per loop phase (detection, remap, force, growth, integration, output) in summary.json");
+  app.add_option("--time-after", opt.time_after,
+                 "also time the steps after N alone (summary.json \"timed\"; e.g. a hold phase)")
+      ->check(CLI::Range(int64_t(0), int64_t(1000000000000LL)));
   CLI11_PARSE(app, argc, argv);
   opt.progress = isatty(fileno(stdout)) != 0;
 

@@ -16,7 +16,7 @@ def fcc_scene(law_block=None, ncell=14, steps=None, deform_steps=None, output_in
     """Scene text: law_block replaces the marked block; ncell resizes lattice and box."""
     text = open(SCENE).read()
     if law_block is not None:
-        text, n = re.subn(r"(# --- law ---\n).*?(# --- end law ---\n)",
+        text, n = re.subn(r"(# --- law ---[^\n]*\n).*?(# --- end law ---\n)",
                           lambda m: m.group(1) + law_block.lstrip() + m.group(2), text, flags=re.S)
         if n != 1:
             raise SystemExit(f"{SCENE}: the '# --- law ---' / '# --- end law ---' markers are missing")
@@ -27,10 +27,25 @@ def fcc_scene(law_block=None, ncell=14, steps=None, deform_steps=None, output_in
         if n1 != 1 or n2 != 1:
             raise SystemExit(f"{SCENE}: expected one 'cells = [14, 14, 14]' and one 'hi = [...]' line")
     if steps is not None:
-        text = re.sub(r"^steps\s*=\s*\d+", f"steps = {steps}", text, flags=re.M)
+        text = set_key(text, "run", "steps", steps)
     if deform_steps is not None:
-        text = re.sub(r"(\[box\.deform\][^\[]*?)steps\s*=\s*\d+", lambda m: m.group(1) + f"steps = {deform_steps}",
-                      text, flags=re.S)
+        text = set_key(text, "box.deform", "steps", deform_steps)
     if output_interval is not None:
-        text = re.sub(r"^output_interval\s*=\s*\d+", f"output_interval = {output_interval}", text, flags=re.M)
+        text = set_key(text, "run", "output_interval", output_interval)
     return text
+
+
+def set_key(text, table, key, value):
+    """Sets `key = value` inside [table] (the key must be there)."""
+    out, current, done = [], None, False
+    for line in text.splitlines(keepends=True):
+        m = re.match(r"^\[([^\]]+)\]\s*(#.*)?$", line)
+        if m:
+            current = m.group(1).strip()
+        elif current == table and re.match(rf"^{re.escape(key)}\s*=", line):
+            line = f"{key} = {value}\n"
+            done = True
+        out.append(line)
+    if not done:
+        raise SystemExit(f"{SCENE}: no '{key}' in [{table}]")
+    return "".join(out)

@@ -40,7 +40,7 @@ LAWS = {
         "lammps": [("hhist_omp", "omp", "gran/hertz/history/omp"),
                    ("hm_mindlin", "serial", "granular hertz/material + mindlin")],
         "epac": """
-[materials.grain]
+[materials.bead]
 youngs_modulus = 1.0e9
 poisson_ratio = 0.3
 density = 1000.0
@@ -55,7 +55,7 @@ name = "hertz_mindlin"
         "title": "JKR + Mindlin (surface energy 1 J/m^2)",
         "lammps": [("jkr_mindlin", "serial", "granular jkr + mindlin")],
         "epac": """
-[materials.grain]
+[materials.bead]
 youngs_modulus = 1.0e9
 poisson_ratio = 0.3
 density = 1000.0
@@ -71,7 +71,7 @@ name = "jkr"
         "title": "Nan 2022 (adhesion 1 J/m^2, yield 5 MPa)",
         "lammps": [],
         "epac": """
-[materials.grain]
+[materials.bead]
 youngs_modulus = 1.0e9
 poisson_ratio = 0.3
 density = 1000.0
@@ -88,7 +88,7 @@ name = "nan2022"
         "title": "MDR, plasticity, no adhesion, no growth (Y 5 MPa)",
         "lammps": [("mdr", "serial", "granular mdr")],
         "epac": """
-[materials.grain]
+[materials.bead]
 youngs_modulus = 1.0e9
 poisson_ratio = 0.3
 density = 1000.0
@@ -105,7 +105,7 @@ effects = ["plasticity", "friction", "damping"]
         "title": "MDR, plasticity + radius growth (Y 5 MPa)",
         "lammps": [("mdr", "serial", "granular mdr")],
         "epac": """
-[materials.grain]
+[materials.bead]
 youngs_modulus = 1.0e9
 poisson_ratio = 0.3
 density = 1000.0

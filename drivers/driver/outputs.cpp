@@ -88,6 +88,13 @@ void write_summary_json(const std::string& path, const RunSummary& s) {
   j["contact_steps_per_second"] = s.contact_steps_per_second;
   j["active_contact_steps_per_second"] = s.active_contact_steps_per_second;
   j["particle_steps_per_second"] = s.particle_steps_per_second;
+  if (s.timed.enabled) {
+    j["timed"] = {{"first_step", s.timed.first_step},
+                  {"steps", s.timed.steps},
+                  {"wall_s", s.timed.wall_s},
+                  {"list_contacts_mean", s.timed.list_contacts_mean},
+                  {"active_contacts_mean", s.timed.active_contacts_mean}};
+  }
   if (!s.phases.empty()) {
     nlohmann::json ph = nlohmann::json::object();
     for (const auto& kv : s.phases) ph[kv.first] = kv.second;

@@ -15,6 +15,7 @@ struct RunOptions {
   bool quiet = false;                // no informational lines, no progress line
   bool progress = false;             // the \r progress line (main sets it when stdout is a terminal)
   bool phase_times = false;          // --phase-times: seconds per loop phase in summary.json "phases"
+  std::int64_t time_after = -1;      // --time-after N: also time steps N+1.. alone (summary.json "timed")
 };
 
 struct RunSummary {
@@ -32,6 +33,15 @@ struct RunSummary {
   // --phase-times: seconds per phase of the loop (driver/phase_times.hpp); empty otherwise
   // (then summary.json has no "phases").
   std::vector<std::pair<std::string, double>> phases;
+  // --time-after N: the steps after N alone (e.g. the hold phase after a box deformation), so a
+  // benchmark can time the same window as a peer code's last `run`.
+  struct TimedWindow {
+    bool enabled = false;
+    std::int64_t first_step = 0, steps = 0;
+    double wall_s = 0;
+    double list_contacts_mean = 0;    // list entries per step
+    double active_contacts_mean = 0;  // overlapping contacts, mean over the window's output samples
+  } timed;
   // With a [box]: the edges at the end of the run [m] (summary.json "box_edge"); empty otherwise.
   std::vector<double> box_edge;
   int history_fields = 0;
