@@ -18,6 +18,7 @@ LAMMPS is built on first use (about 2-5 min; cached in ~/.cache/lammps-peer) wit
 ../shared/peers/lammps; epac-run is taken from $EPAC_BUILD_DIR (default build/) and built if missing.
 """
 import argparse
+import csv
 import json
 import os
 import re
@@ -176,6 +177,29 @@ def epac_hold(exe, law, threads, precision, ncell, workdir, tag, deform_steps=50
             "ns_per_contact_step": 1e9 * t["wall_s"] / (t["active_contacts_mean"] * t["steps"])}
 
 
+def legacy_hold(exe, law, threads, workdir, tag):
+    """An epac-run without periodic boxes or --time-after (a "before" build) on the wall-wrapped
+    scene (legacy_walls_scene.py): the hold phase is the 700-step run minus the 500-step run."""
+    scene = os.path.join(workdir, f"fcc_walls_{law}.toml")
+    if not os.path.exists(scene):
+        with open(scene, "w") as f:
+            f.write(subprocess.check_output([sys.executable, os.path.join(os.path.dirname(__file__), "legacy_walls_scene.py"),
+                                             "--epac-run", ensure_epac_run(), "--law", law], text=True))
+    env = dict(os.environ, OMP_NUM_THREADS=str(threads), OMP_PROC_BIND=os.environ.get("OMP_PROC_BIND", "false"))
+    t = {}
+    for steps in (500, 700):
+        out = os.path.join(workdir, f"legacy.{law}.{threads}t.{steps}.{tag}")
+        subprocess.check_call([exe, scene, "--threads", str(threads), "--quiet", "--steps", str(steps), "--out", out],
+                              env=env)
+        t[steps] = json.load(open(os.path.join(out, "summary.json")))["wall_time_s"]
+        if steps == 700:
+            rows = list(csv.DictReader(open(os.path.join(out, "timeseries.csv"))))
+            active = [float(r["pair_contacts"]) + float(r["wall_contacts"]) for r in rows if int(r["step"]) > 500]
+    contacts = sum(active) / len(active)
+    loop = t[700] - t[500]
+    return {"loop_s": loop, "steps": 200, "contacts": contacts, "ns_per_contact_step": 1e9 * loop / (contacts * 200)}
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--threads", type=int, nargs="+", default=[1, 2])
@@ -185,6 +209,9 @@ def main():
     ap.add_argument("--ncell", type=int, default=14)
     ap.add_argument("--json", default=None, help="write the measurements here")
     ap.add_argument("--lmp", default=os.environ.get("LMP", LMP_DEFAULT))
+    ap.add_argument("--legacy-epac-run", default=None,
+                    help="an older epac-run without periodic boxes (a 'before' build): also timed, on the "
+                         "wall-wrapped scene (legacy_walls_scene.py)")
     args = ap.parse_args()
 
     lmp = ensure_lammps(args.lmp)
@@ -205,10 +232,17 @@ def main():
                         key = ("epac", prec)
                         if key not in best or m["loop_s"] < best[key]["loop_s"]:
                             best[key] = m
+                    if args.legacy_epac_run:
+                        m = legacy_hold(args.legacy_epac_run, law, t, work, f"r{r}")
+                        if "legacy" not in best or m["loop_s"] < best["legacy"]["loop_s"]:
+                            best["legacy"] = m
                 for prec in args.precision:
                     e = best[("epac", prec)]
                     row = {"law": law, "title": LAWS[law]["title"], "threads": t, "precision": prec,
                            "epac_ns": e["ns_per_contact_step"], "epac_contacts": e["contacts"], "peers": []}
+                    if "legacy" in best:
+                        row["before_ns"] = best["legacy"]["ns_per_contact_step"]
+                        row["before_contacts"] = best["legacy"]["contacts"]
                     for pair, mode, title in LAWS[law]["lammps"]:
                         l = best[("lammps", pair)]
                         row["peers"].append({"style": title, "pair_file": f"pair.{pair}", "threaded": mode == "omp",
@@ -222,15 +256,17 @@ def main():
     print(f"Hold phase, whole step loop, ns per active contact-step (best of {args.repeats}); "
           "speedup = LAMMPS time / epac time (> 1: epac faster)")
     print()
-    print("| law | threads | epac | LAMMPS style | LAMMPS | speedup |")
-    print("|---|---|---|---|---|---|")
+    legacy = args.legacy_epac_run is not None
+    print("| law | threads |" + (" epac before |" if legacy else "") + " epac | LAMMPS style | LAMMPS | speedup |")
+    print("|---|---|" + ("---|" if legacy else "") + "---|---|---|---|")
     for row in results:
         label = f"{row['title']}" + (f" [{row['precision']}]" if len(args.precision) > 1 else "")
+        before = f" {row['before_ns']:.1f} |" if legacy else ""
         if not row["peers"]:
-            print(f"| {label} | {row['threads']} | {row['epac_ns']:.1f} | (no LAMMPS peer) | - | - |")
+            print(f"| {label} | {row['threads']} |{before} {row['epac_ns']:.1f} | (no LAMMPS peer) | - | - |")
         for p in row["peers"]:
             note = "" if p["threaded"] else " (no threaded style: 1 thread)"
-            print(f"| {label} | {row['threads']} | {row['epac_ns']:.1f} | {p['style']}{note} | "
+            print(f"| {label} | {row['threads']} |{before} {row['epac_ns']:.1f} | {p['style']}{note} | "
                   f"{p['lammps_ns']:.1f} | {p['speedup']:.2f} |")
     if args.json:
         with open(args.json, "w") as f:
