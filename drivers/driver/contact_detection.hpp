@@ -19,6 +19,8 @@
 #include <epac/state/particles.hpp>
 #include <epac/state/walls.hpp>
 
+#include <functional>
+
 namespace epac {
 namespace driver {
 
@@ -34,8 +36,8 @@ ContactList<Device> list_with_room(const ContactList<Device>& old, int count, co
 }
 }  // namespace detail
 
-// Pairs i < j within R_i + R_j + skin (minimum-image distance on p.box's periodic axes). `reuse`
-// donates its storage if large enough.
+// Pairs within R_i + R_j + skin (minimum-image distance on p.box's periodic axes), each once,
+// stored with gid(first) < gid(second). `reuse` donates its storage if large enough.
 template <class T, class Device>
 ContactList<Device> find_pairs(const Particles<T, Device>& p, const CellList<T, Device>& cells, T skin,
                                const ContactList<Device>& reuse = {}) {
@@ -71,6 +73,7 @@ ContactList<Device> find_pairs(const Particles<T, Device>& p, const CellList<T, 
   ContactList<Device> list = detail::list_with_room(reuse, total, "pairs");
   auto first = list.first;
   auto second = list.second;
+  auto gid = p.gid;
   Kokkos::parallel_for("epac::driver::pair_fill", Kokkos::RangePolicy<exec>(0, n), KOKKOS_LAMBDA(int i) {
     const Vec3<T> xi = load3(x, i);
     const T ri = r(i);
@@ -81,8 +84,12 @@ ContactList<Device> find_pairs(const Particles<T, Device>& p, const CellList<T, 
       if (periodic) d = box.minimum_image(d);
       const T cut = ri + r(j) + skin;
       if (dot(d, d) < cut * cut) {
-        first(k) = i;
-        second(k) = j;
+        // Oriented by global id: pair history that has a direction (the tangential spring's
+        // displacement of first relative to second) keeps its meaning when a spatial sort
+        // changes which of the two has the smaller index. Without a sort gid order is index order.
+        const bool swap = gid(j) < gid(i);
+        first(k) = swap ? j : i;
+        second(k) = swap ? i : j;
         ++k;
       }
     });
@@ -162,13 +169,24 @@ class ContactDetector {
 
   // The two halves of build (timed apart by the driver's --phase-times): the lists and the
   // rebuild rule's reference state, then the history remap (needs the new lists).
-  void detect(const Particles<T, Device>& p, const Walls<T, Device>& w) {
+  // on_sort (optional; the driver's [run] spatial_sort): called with the cell-order permutation
+  // (new index k = old index perm(k)); it must reorder every per-particle array in place. The
+  // lists are then built on the reordered particles, whose cell list is the identity.
+  using sort_callback = std::function<void(const Kokkos::View<int*, Device>&)>;
+  void detect(const Particles<T, Device>& p, const Walls<T, Device>& w, const sort_callback* on_sort = nullptr) {
     T rmax = T(0);
     auto r = p.radius;
     Kokkos::parallel_reduce(
         "epac::driver::max_radius", Kokkos::RangePolicy<exec>(0, p.n),
         KOKKOS_LAMBDA(int i, T& m) { if (r(i) > m) m = r(i); }, Kokkos::Max<T>(rmax));
-    const CellList<T, Device> cells = build_cell_list(p, T(2) * rmax + skin_);
+    CellList<T, Device> cells = build_cell_list(p, T(2) * rmax + skin_);
+    if (on_sort && *on_sort) {
+      (*on_sort)(cells.sorted);
+      Kokkos::View<int*, Device> identity(Kokkos::view_alloc(Kokkos::WithoutInitializing, "epac::driver::cell_sorted"), p.n);
+      Kokkos::parallel_for("epac::driver::cell_identity", Kokkos::RangePolicy<exec>(0, p.n),
+                           KOKKOS_LAMBDA(int k) { identity(k) = k; });
+      cells.sorted = identity;
+    }
     pairs = find_pairs(p, cells, skin_, pairs);
     walls = find_wall_contacts(p, w, skin_, walls);
     // Reference state for the rebuild rule.

@@ -46,6 +46,11 @@ struct ModelFactoryBase {
   // section 4 step 4).
   template <class P, class T>
   static void after_forces(const Model&, const P&, T) {}
+  // Called when the driver reorders the particles ([run] spatial_sort, at a rebuild): `permute`
+  // reorders a per-particle view in place (permute(view)); a model with per-particle state of
+  // its own (MDR's growth state) passes each such view. The particles' views are done already.
+  template <class Permute>
+  static void reorder(const Model&, const Permute&) {}
   // Model-specific counters for the summary (printed and in summary.json under "model_counters"),
   // e.g. MDR's guard hits. Called once after the last step.
   static void report(const Model&, RunSummary&) {}

@@ -12,6 +12,7 @@
 #include "driver/phase_times.hpp"
 #include "driver/run_options.hpp"
 #include "driver/scene.hpp"
+#include "driver/spatial_sort.hpp"
 
 #include <epac/compute/contact_forces.hpp>
 #include <epac/compute/particle_sums.hpp>
@@ -165,6 +166,15 @@ class DrivenMotion {
   }
   bool empty() const { return idx_.empty(); }
 
+  // After a spatial sort: the moved particles' device indices follow them (inv: old -> new).
+  void reindex(const Kokkos::View<int*, Device>& inv) {
+    if (idx_.empty()) return;
+    const auto idx = d_idx_;
+    Kokkos::parallel_for("epac::driver::driven_reindex",
+                         Kokkos::RangePolicy<typename Device::execution_space>(0, static_cast<int>(idx_.size())),
+                         KOKKOS_LAMBDA(int k) { idx(k) = inv(idx(k)); });
+  }
+
   // Sets the driven velocities for the step [t0, t0 + dt].
   void advance(const Particles<T, Device>& p, double t0, double dt) {
     if (idx_.empty()) return;
@@ -263,7 +273,18 @@ RunSummary run_scene(const Scene& scene, const RunOptions& opt) {
   box.apply(p);  // the host wrapped the positions into the box (finish_scene)
 
   ContactDetector<T, Device> det(T(scene.run.skin), F::pair_history_fields, F::wall_history_fields);
-  det.build(p, walls);
+  // [run] spatial_sort: every per-particle array follows the cell order at each rebuild.
+  typename ContactDetector<T, Device>::sort_callback on_sort;
+  if (scene.run.spatial_sort)
+    on_sort = [&](const Kokkos::View<int*, Device>& perm) {
+      const Permuter<T, Device> permute(perm);
+      permute.particles(p);
+      permute(driven);
+      F::reorder(model, permute);
+      driven_motion.reindex(permute.inverse());
+    };
+  det.detect(p, walls, &on_sort);
+  det.remap(p);
   wall_driver.mark_build();
   // One accumulator for all passes (its per-thread copies are allocated once); rebound if the
   // particle views are ever reallocated.
@@ -319,12 +340,14 @@ RunSummary run_scene(const Scene& scene, const RunOptions& opt) {
     auto R0 = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.radius0);
     const auto vol = F::template particle_volume<T, Device>(model);
     auto V = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), vol);
+    auto gid = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.gid);
     const int n = p.n;
     std::vector<double> xs(n), ys(n), zs(n), Rs(n), R0s(n), Vs(n);
-    for (int i = 0; i < n; ++i) {
-      xs[i] = x(i, 0); ys[i] = x(i, 1); zs[i] = x(i, 2);
-      Rs[i] = R(i); R0s[i] = R0(i);
-      Vs[i] = static_cast<int>(V.extent(0)) == n ? double(V(i)) : 4.0 / 3.0 * M_PI * Rs[i] * Rs[i] * Rs[i];
+    for (int i = 0; i < n; ++i) {  // rows in global-id order (the arrays may be spatially sorted)
+      const std::size_t k = static_cast<std::size_t>(gid(i));
+      xs[k] = x(i, 0); ys[k] = x(i, 1); zs[k] = x(i, 2);
+      Rs[k] = R(i); R0s[k] = R0(i);
+      Vs[k] = static_cast<int>(V.extent(0)) == n ? double(V(i)) : 4.0 / 3.0 * M_PI * Rs[k] * Rs[k] * Rs[k];
     }
     particles_csv->write(step, step * scene.run.dt, xs, ys, zs, Rs, R0s, Vs);
   };
@@ -386,7 +409,7 @@ RunSummary run_scene(const Scene& scene, const RunOptions& opt) {
     phases.lap(Phase::integration);
     if (det.needs_rebuild(shift, T(wall_driver.max_shift_since_build()))) {
       box.wrap(p);  // then detect() records the wrapped positions as the reference: a wrap is no motion
-      det.detect(p, walls);
+      det.detect(p, walls, &on_sort);
       wall_driver.mark_build();
       phases.lap(Phase::detection);
       det.remap(p);

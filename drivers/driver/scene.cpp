@@ -480,6 +480,7 @@ void parse_run(TableReader& top, Scene& s) {
   s.run.skin = r.number("skin", 0.0, Bound::closed, kInf, Bound::open, -1.0);
   s.run.contact_output = r.boolean("contact_output", false);
   s.run.particle_output = r.boolean("particle_output", false);
+  s.run.spatial_sort = r.boolean("spatial_sort", false);
   r.finish();
 }
 

@@ -128,6 +128,7 @@ struct RunSpec {
   double skin = -1;                  // < 0: 0.2 x the smallest radius (see finish_scene)
   bool contact_output = false;       // contacts.csv at every output step
   bool particle_output = false;      // particles.csv at every output step
+  bool spatial_sort = false;         // reorder the particle arrays in cell order at every rebuild
 };
 
 struct Scene {

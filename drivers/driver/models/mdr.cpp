@@ -46,6 +46,15 @@ struct MdrFactory : ModelFactoryBase<Mdr<T, Effects<Bits>, Device>> {
   static void bind(model_type& m, const Particles<T, Device>& p) { m.bind(p); }
   // MDR (37)-(39): the apparent radii and volumes from this pass's sums (design.md section 4 step 4).
   static void after_forces(const model_type& m, const Particles<T, Device>&, T) { m.update_radii(); }
+  // [run] spatial_sort: the growth state is per particle (R, R_o are the particles' views).
+  template <class Permute>
+  static void reorder(const model_type& m, const Permute& permute) {
+    if (!m.growth.bound()) return;
+    permute(m.growth.volume);
+    permute(m.growth.eps_sum);
+    permute(m.growth.numerator);
+    permute(m.growth.denominator);
+  }
   // contacts.csv columns (Mdr::outputs; pair values are the means of the two sides, side 0 being
   // the particle with the smaller global id; a wall contact has one side).
   // contact_radius: the MDR contact half-width a of the ellipse at the current depth (mean over
