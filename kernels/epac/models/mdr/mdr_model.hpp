@@ -147,7 +147,7 @@ struct Mdr {
     }
     o.active = true;
 
-    const MdrPairConstants<T> pc = pairs(g.pair);
+    const MdrPairConstants<T>& pc = pairs(g.pair);  // reference: load only the fields used
     const bool grows = Eff::radius_growth && growth.bound();
 
     // growth of each side's radius, R - R_o (0 without radius growth): delta_o = delta - growth
