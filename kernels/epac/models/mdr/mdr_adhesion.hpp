@@ -83,14 +83,10 @@ struct MdrAdhesiveForce {
 // "forceAdhesion" of Appendix E. E: the side's E_eff; gamma > 0; xi of (15); A, B: current ellipse;
 // d: transformed elastic displacement delta_1D^e; a_old: stored contact radius.
 // Force with tension: F = F_na(g_1D(a)) + 2 E (d - g_1D(a)) a, MDR (46)-(47).
+// States 2-4 (springs in tension), kept out of the inlined hot path: a_na < a_old.
 template <class T>
-KOKKOS_INLINE_FUNCTION MdrAdhesiveForce<T> mdr_adhesive_force(T E, T gamma, T xi, T A, T B, T d,
-                                                              T a_old) {
-  const T a_na = mdr_ellipse_contact_radius(A, B, d);
-  if (a_na >= a_old) {
-    // state 1: no tensile springs, the non-adhesive law (a_na = 0 and d <= 0: no contact)
-    return {mdr_ellipse_force(E, A, B, d), a_na, kMdrNoTension};
-  }
+KOKKOS_INLINE_FUNCTION MdrAdhesiveForce<T> mdr_adhesive_force_tension(T E, T gamma, T xi, T A, T B, T d,
+                                                                      T a_old) {
   const T a_stored = math::min(a_old, T(0.5) * B);  // a <= B/2 (guards the sqrt of (44))
   const T g_old = mdr_ellipse_gap(A, B, a_stored);
   const T extension = g_old - d;  // > 0 here since a_na < a_old
@@ -108,6 +104,17 @@ KOKKOS_INLINE_FUNCTION MdrAdhesiveForce<T> mdr_adhesive_force(T E, T gamma, T xi
   const T g = mdr_ellipse_gap(A, B, a);
   const T F = mdr_ellipse_force(E, A, B, g) - T(2) * E * (g - d) * a;
   return {F, a, kMdrPeeling};
+}
+
+template <class T>
+KOKKOS_FORCEINLINE_FUNCTION MdrAdhesiveForce<T> mdr_adhesive_force(T E, T gamma, T xi, T A, T B, T d,
+                                                                   T a_old) {
+  const T a_na = mdr_ellipse_contact_radius(A, B, d);
+  if (a_na >= a_old) {
+    // state 1: no tensile springs, the non-adhesive law (a_na = 0 and d <= 0: no contact)
+    return {mdr_ellipse_force(E, A, B, d), a_na, kMdrNoTension};
+  }
+  return mdr_adhesive_force_tension(E, gamma, xi, A, B, d, a_old);
 }
 
 }  // namespace epac

@@ -11,7 +11,7 @@ namespace epac {
 // x = depth / A: then (1 - 2x) = cos(theta) and sqrt(4x - 4x^2) = sin(theta). For small theta the
 // two terms cancel (error ~ eps/theta^2), so a series is used there (it is ~ (2/3) theta^3).
 template <class T>
-KOKKOS_INLINE_FUNCTION T mdr_ellipse_bracket(T th) {
+KOKKOS_FORCEINLINE_FUNCTION T mdr_ellipse_bracket(T th) {
   if (th < T(0.25)) {
     // sum_{k>=1} (-1)^(k+1) 2^(2k) theta^(2k+1) / (2k+1)!, through k = 7: truncation below 1e-17
     // relative for theta < 0.25.
@@ -28,17 +28,30 @@ KOKKOS_INLINE_FUNCTION T mdr_ellipse_bracket(T th) {
   return th - math::sin(th) * math::cos(th);
 }
 
+// The bracket of (30) as a function of x = depth / A in [0, 1], without sin/cos: with
+// theta = 2 asin(sqrt(x)), sin(theta) cos(theta) = 2 sqrt(x (1 - x)) (1 - 2x) exactly
+// (sin(theta/2) = sqrt(x), cos(theta/2) = sqrt(1 - x)). At the equator x = 1/2 (every plastic
+// loading step, d = A/2 exactly) it is pi/2, returned without the asin.
+template <class T>
+KOKKOS_FORCEINLINE_FUNCTION T mdr_ellipse_bracket_of_depth(T x) {
+  if (x == T(0.5)) return T(0.5) * constants<T>::pi;
+  // x in [0, 1] (callers clamp): sqrt arguments >= 0
+  const T sx = math::sqrt(x);
+  const T th = T(2) * math::asin(sx);
+  if (th < T(0.25)) return mdr_ellipse_bracket(th);  // series: the difference below cancels
+  return th - T(2) * (T(1) - T(2) * x) * sx * math::sqrt_nonneg(T(1) - x);
+}
+
 // MDR (30): force of the ellipse pressed to depth d into the springs.
 //   F = E A B / 4 [acos(1 - 2d/A) - (1 - 2d/A) sqrt(4d/A - 4d^2/A^2)]
 // Domain: 0 <= d <= A. d <= 0 gives 0 (no contact); d > A is clamped to A (the whole ellipse is
 // submerged; unreachable in the plastic regime, where d <= A/2). theta = 2 asin(sqrt(d/A)) equals
 // the acos of (30) without its loss of precision near d = 0.
 template <class T>
-KOKKOS_INLINE_FUNCTION T mdr_ellipse_force(T E, T A, T B, T d) {
+KOKKOS_FORCEINLINE_FUNCTION T mdr_ellipse_force(T E, T A, T B, T d) {
   if (!(d > T(0)) || !(A > T(0))) return T(0);
   const T x = math::min(d / A, T(1));
-  const T th = T(2) * math::asin(math::sqrt(x));
-  return E * A * B / T(4) * mdr_ellipse_bracket(th);
+  return E * A * B * T(0.25) * mdr_ellipse_bracket_of_depth(x);
 }
 
 // MDR (44): g_1D(a) = A/2 - (A/B) sqrt(B^2/4 - a^2), the ellipse's gap at half-width a. Written
@@ -62,9 +75,11 @@ KOKKOS_INLINE_FUNCTION T mdr_ellipse_gap_slope(T A, T B, T a) {
 // Half-width of the ellipse's contact at depth d with no tension: the a with g_1D(a) = d,
 // a = (B/A) sqrt(d (A - d)). Domain: 0 <= d <= A/2 (beyond the equator the width is B/2).
 template <class T>
-KOKKOS_INLINE_FUNCTION T mdr_ellipse_contact_radius(T A, T B, T d) {
+KOKKOS_FORCEINLINE_FUNCTION T mdr_ellipse_contact_radius(T A, T B, T d) {
   if (!(d > T(0))) return T(0);
-  const T dd = math::min(d, T(0.5) * A);
+  const T half = T(0.5) * A;
+  if (d >= half) return T(0.5) * B;  // at/after the equator (plastic loading: d = A/2 exactly)
+  const T dd = d;
   return B / A * math::sqrt_nonneg(dd * (A - dd));
 }
 

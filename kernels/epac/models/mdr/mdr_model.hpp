@@ -27,8 +27,10 @@
 //   Nan (22)); its Coulomb limit mu |f| uses the MDR force including adhesive tension.
 // - A contact is inactive (its history reset, tangential history too) once the apparent overlap is
 //   <= 0 and no side holds an adhesive radius; the grown radius stays.
-// - Radius growth: each side's terms go to the particle sums (mdr_radius_growth.hpp); call
-//   bind(particles) once and update_radii() after every force pass (design.md section 4 step 4).
+// - Radius growth: each side's terms go to the particle sums (mdr_radius_growth.hpp; per-thread
+//   copies on host backends, atomics on GPUs); call bind(particles) once and update_radii() after
+//   every force pass (design.md section 4 step 4); update_radii also clears the copies for the
+//   next pass, so no begin call is needed.
 #include <epac/models/contact_geometry.hpp>
 #include <epac/models/effects.hpp>
 #include <epac/models/mdr/mdr_pair_split.hpp>
@@ -113,25 +115,29 @@ struct Mdr {
   // Evaluates the contact; Write = true advances history and adds growth terms (the force pass),
   // Write = false only reads (outputs). A second evaluation at the same geometry right after a
   // force pass returns the same force (the state reached is a fixed point of the law).
+  // Hot path: one pair-table load (both sides' constants), history fields loaded only where the
+  // regime reads them and stored only where they change.
   template <bool Write>
-  KOKKOS_INLINE_FUNCTION MdrContactOutput<T> evaluate(const ContactGeometry<T>& g,
-                                                      const HistoryRow<T, Device>& row,
-                                                      NormalForce<T>* nf_out) const {
+  KOKKOS_FORCEINLINE_FUNCTION MdrContactOutput<T> evaluate(const ContactGeometry<T>& g,
+                                                           const HistoryRow<T, Device>& row,
+                                                           NormalForce<T>* nf_out) const {
     MdrContactOutput<T> o;
     const bool is_pair = g.j >= 0;
     const int nsides = is_pair ? 2 : 1;
     o.sides = nsides;
-    const int mi = g.pair / nmat, mj = g.pair % nmat;
-    // sides ordered by global id
+    // sides ordered by global id; a wall has one side (side 0 = particle i)
     const bool swap = is_pair && !g.i_is_first;
     const int part[2] = {swap ? g.j : g.i, swap ? g.i : g.j};
     const T Rs[2] = {swap ? g.R_j : g.R_i, swap ? g.R_i : g.R_j};
-    const int mats[2] = {swap ? mj : mi, swap ? mi : mj};
-    MdrSideState<T> st[2] = {load_side(row, 0), load_side(row, 1)};
 
+    // adhesive hold: an open contact stays while a side keeps an adhesive radius
+    T a_adh_old[2] = {T(0), T(0)};
     bool adhesive_hold = false;
     if (Eff::adhesion)
-      for (int s = 0; s < nsides; ++s) adhesive_hold = adhesive_hold || st[s].a_adh > T(0);
+      for (int s = 0; s < nsides; ++s) {
+        a_adh_old[s] = row(side_base(s) + kPlasticFields);
+        adhesive_hold = adhesive_hold || a_adh_old[s] > T(0);
+      }
     if (!(g.delta > T(0)) && !adhesive_hold) {
       // open contact: everything is reset (the grown radius stays)
       if (Write)
@@ -141,32 +147,62 @@ struct Mdr {
     }
     o.active = true;
 
+    const MdrPairConstants<T>& pc = pairs(g.pair);  // reference: load only the fields used
+    const bool grows = Eff::radius_growth && growth.bound();
+
     // growth of each side's radius, R - R_o (0 without radius growth): delta_o = delta - growth
+    T R0s[2] = {Rs[0], Rs[1]};
     T growth_of[2] = {T(0), T(0)};
-    if (Eff::radius_growth && growth.volume.extent(0) > 0)
-      for (int s = 0; s < nsides; ++s) growth_of[s] = Rs[s] - growth.radius0(part[s]);
+    if (grows)
+      for (int s = 0; s < nsides; ++s) {
+        R0s[s] = growth.radius0(part[s]);
+        growth_of[s] = Rs[s] - R0s[s];
+      }
+
+    // per-side history: the fields every regime needs (delta_p: below)
+    MdrSideState<T> st[2];
+    for (int s = 0; s < nsides; ++s) {
+      const int b = side_base(s);
+      if (Eff::plasticity) {
+        st[s].delta_o_max = row(b + 0);
+        st[s].yielded = row(b + 1);
+        if (st[s].yielded != T(0)) st[s].c_A = row(b + 2);  // read only once plastic
+        if (!Write) st[s].delta_p = row(b + 3);             // outputs report it
+      }
+      if (Eff::adhesion) st[s].a_adh = a_adh_old[s];
+      if (Eff::radius_growth) {
+        st[s].delta_o_prev = row(b + kPlasticFields + kAdhesionFields);
+        st[s].eps_prev = row(b + kPlasticFields + kAdhesionFields + 1);
+      }
+    }
+
     T dside[2] = {g.delta, T(0)};
     if (is_pair) {
       // largest total overlap by (19): running maximum of the total delta_o, plus both growths
       const T shift = growth_of[0] + growth_of[1];
       T dmax = g.delta;
       if (Eff::plasticity) {
-        const T dmax_o = math::max(row(0), g.delta - shift);
-        if (Write) row(0) = dmax_o;
+        const T old = row(0);
+        const T dmax_o = math::max(old, g.delta - shift);
+        if (Write && dmax_o != old) row(0) = dmax_o;
         dmax = dmax_o + shift;
       }
+      // the residual overlaps enter the split only below dmax (mdr_split_overlap)
+      if (Write && Eff::plasticity && dmax > T(0) && !(g.delta >= dmax))
+        for (int s = 0; s < 2; ++s) st[s].delta_p = row(side_base(s) + 3);
       const MdrSideOverlaps<T> so = mdr_split_overlap(g.delta, dmax, Rs[0], Rs[1], st[0].delta_p, st[1].delta_p);
       dside[0] = so.d0;
       dside[1] = so.d1;
       o.delta_max = dmax;
     }
 
-    const MdrPairConstants<T> pc = pairs(g.pair);
     T F = T(0), a_sum = T(0), area_sum = T(0), a_adh_sum = T(0);
     for (int s = 0; s < nsides; ++s) {
-      const MdrSideConstants<T> c = sides(mats[s]);
+      const bool side_b = (s == 0) == swap;  // side 0 is material b when swapped; side 1 unless
+      const MdrSideConstants<T>& c = side_b ? pc.side_b : pc.side_a;
       // Each side's share of the surface energy: gamma_s = Delta gamma E* / E_eff,s (see the header)
-      const T gamma_s = Eff::adhesion ? pc.gamma * pc.E_star / c.E_eff : T(0);
+      const T gamma_s = Eff::adhesion ? (side_b ? pc.gamma_b : pc.gamma_a) : T(0);
+      const MdrSideState<T> before = st[s];
       const MdrSideResult<T> r =
           mdr_side_force<Eff::plasticity, Eff::adhesion>(c, gamma_s, xi, dside[s], Rs[s], growth_of[s], st[s]);
       F += r.F;
@@ -180,14 +216,16 @@ struct Mdr {
       o.side_delta_max[s] = r.delta_max;
       o.side_delta_p[s] = st[s].delta_p;
       o.side_radius[s] = r.a;
-      if (Write && Eff::radius_growth && growth.volume.extent(0) > 0) {  // bound
-        const bool plastic_loading = r.plastic && r.loading && r.F > T(0);
-        mdr_growth_add_side(growth, part[s], c.kappa, r.F, dside[s], Rs[s], plastic_loading,
-                            st[s].delta_o_prev, st[s].eps_prev);
+      if (Write) {
+        if (grows) {
+          const bool plastic_loading = r.plastic && r.loading && r.F > T(0);
+          mdr_growth_add_side(growth, growth.sums.scatter.access(), part[s], R0s[s], c.inv_3kappa, r.F, dside[s],
+                              Rs[s], plastic_loading, st[s].delta_o_prev, st[s].eps_prev);
+        }
+        store_changed(row, s, before, st[s], r.plastic);
       }
-      if (Write) store_side(row, s, st[s]);
     }
-    const T inv = T(1) / T(nsides);
+    const T inv = is_pair ? T(0.5) : T(1);  // 1 / nsides
     o.force = F * inv;
     o.area = area_sum * inv;
     o.mean_pressure = o.area > T(0) ? o.force / o.area : T(0);
@@ -213,8 +251,28 @@ struct Mdr {
     return o;
   }
 
-  KOKKOS_INLINE_FUNCTION NormalForce<T> normal(const ContactGeometry<T>& g,
-                                               const HistoryRow<T, Device>& row) const {
+  // Stores the side's fields that the step changed (a plastic step always rewrites delta_p).
+  static KOKKOS_FORCEINLINE_FUNCTION void store_changed(const HistoryRow<T, Device>& row, int s,
+                                                        const MdrSideState<T>& was, const MdrSideState<T>& st,
+                                                        bool plastic) {
+    const int b = side_base(s);
+    if (Eff::plasticity) {
+      if (st.delta_o_max != was.delta_o_max) row(b + 0) = st.delta_o_max;
+      if (st.yielded != was.yielded) {
+        row(b + 1) = st.yielded;
+        row(b + 2) = st.c_A;
+      }
+      if (plastic) row(b + 3) = st.delta_p;
+    }
+    if (Eff::adhesion && st.a_adh != was.a_adh) row(b + kPlasticFields) = st.a_adh;
+    if (Eff::radius_growth) {
+      row(b + kPlasticFields + kAdhesionFields) = st.delta_o_prev;
+      row(b + kPlasticFields + kAdhesionFields + 1) = st.eps_prev;
+    }
+  }
+
+  KOKKOS_FORCEINLINE_FUNCTION NormalForce<T> normal(const ContactGeometry<T>& g,
+                                                    const HistoryRow<T, Device>& row) const {
     NormalForce<T> nf;
     evaluate<true>(g, row, &nf);
     return nf;
@@ -247,7 +305,7 @@ struct Mdr {
       for (int b = 0; b < m.nmat; ++b)
         hp(a * m.nmat + b) = (materials[a].rigid && materials[b].rigid)
                                  ? MdrPairConstants<T>{}
-                                 : mdr_pair_constants<T>(materials[a], materials[b]);
+                                 : mdr_pair_constants<T>(materials[a], materials[b], opt.yield_onset);
     Kokkos::deep_copy(m.sides, hs);
     Kokkos::deep_copy(m.pairs, hp);
     m.growth.rule = opt.growth_rule;
@@ -262,7 +320,8 @@ struct Mdr {
     if (Eff::radius_growth) growth.attach(p.radius0, p.radius);
   }
 
-  // Applies the growth sums of the last force pass: new R and V per particle, sums reset.
+  // Applies the growth sums of the last force pass: new R and V per particle, sums reset (the
+  // per-thread copies of the pass are added first and cleared after: mdr_radius_growth.hpp).
   void update_radii() const {
     if (Eff::radius_growth && growth.bound()) mdr_update_radii(growth);
   }

@@ -23,14 +23,14 @@ KOKKOS_INLINE_FUNCTION constexpr T mdr_cap_height_limit() { return T(0.75); }
 // must be positive; it is kept at or above 1e-6 (R_self + R_other) (coincident centres).
 // Valid for d <= 0 too (a small negative height: the spheres are apart).
 template <class T>
-KOKKOS_INLINE_FUNCTION T mdr_radical_cap_height(T d, T R_self, T R_other) {
+KOKKOS_FORCEINLINE_FUNCTION T mdr_radical_cap_height(T d, T R_self, T R_other) {
   const T dist = math::max(R_self + R_other - d, T(1e-6) * (R_self + R_other));
   return d * (T(2) * R_other - d) / (T(2) * dist);
 }
 
 // Side 0's height at dmax with the 0.75 R cap (side 1 takes dmax minus this).
 template <class T>
-KOKKOS_INLINE_FUNCTION T mdr_side0_height(T dmax, T R0, T R1) {
+KOKKOS_FORCEINLINE_FUNCTION T mdr_side0_height(T dmax, T R0, T R1) {
   const T h0 = mdr_radical_cap_height(dmax, R0, R1);
   const T lim = mdr_cap_height_limit<T>();
   if (h0 > lim * R0) return lim * R0;
@@ -46,7 +46,7 @@ struct MdrSideOverlaps {
 // Splits the pair's apparent overlap delta. dmax: largest total overlap so far (>= delta after the
 // caller's update); dp0, dp1: the sides' residual overlaps (0 while elastic).
 template <class T>
-KOKKOS_INLINE_FUNCTION MdrSideOverlaps<T> mdr_split_overlap(T delta, T dmax, T R0, T R1, T dp0, T dp1) {
+KOKKOS_FORCEINLINE_FUNCTION MdrSideOverlaps<T> mdr_split_overlap(T delta, T dmax, T R0, T R1, T dp0, T dp1) {
   if (!(dmax > T(0))) {
     // never pressed together: the radical plane at the current (non-positive) overlap
     const T h0 = mdr_radical_cap_height(delta, R0, R1);

@@ -71,7 +71,25 @@ struct MdrSideConstants {
   T kappa;     // bulk modulus, MDR (38)
   T Y;         // yield stress, MDR (16) and (21); +inf: never yields
   T x_yield;   // delta_Y / R, the root of the yield equation (41) (see MdrYieldOnset); +inf: never
+  // Precomputed for the hot path (mdr_side_force); all depend on the material only.
+  T Y_hard;        // 1.75 Y: p_Y = Y + Y_hard exp(-4.4 delta_max/R), MDR (16) with (21)
+  T four_over_E;   // 4 / E_eff: A = (4 p_Y / E_eff) a_max, MDR (28)
+  T cA_over_R2;    // c_A / R^2 = pi (x_y^2 - x_y) at the switch, MDR (43); 0 if never yields
+  T r_rho, r_z;    // E_eff (nu-1)/(2G) and E_eff/(4G): delta_R/(A/2) of MDR (34), see mdr_plastic_shape
+  T inv_3kappa;    // 1 / (3 kappa), MDR (38)
 };
+
+// Fills the precomputed fields of c from its base fields (host).
+template <class T>
+void mdr_fill_derived(MdrSideConstants<T>& c) {
+  const double E = double(c.E_eff), nu = double(c.nu), G = double(c.G), xy = double(c.x_yield);
+  c.Y_hard = T(1.75 * double(c.Y));
+  c.four_over_E = T(4.0 / E);
+  c.cA_over_R2 = std::isfinite(xy) ? T(constants<double>::pi * (xy * xy - xy)) : T(0);
+  c.r_rho = T(E * (nu - 1.0) / (2.0 * G));
+  c.r_z = T(E / (4.0 * G));
+  c.inv_3kappa = T(1.0 / (3.0 * double(c.kappa)));
+}
 
 // Constants of a material pair (particle-particle or particle-wall).
 template <class T>
@@ -81,6 +99,11 @@ struct MdrPairConstants {
   T c_damp;      // viscous coefficient from the restitution (exact Hertz relation)
   T mu;          // Coulomb friction coefficient
   T gamma;       // effective surface energy Delta gamma; 0 = no adhesion for this pair
+  // The two materials' side constants (a: the row material, b: the column one; a rigid one is
+  // left default) and each side's share of gamma, gamma E*/E_eff,s (mdr_model.hpp): one table
+  // load per contact, no per-material lookups on the hot path.
+  MdrSideConstants<T> side_a, side_b;
+  T gamma_a, gamma_b;
 };
 
 // --- yield onset, host --------------------------------------------------------------------------
@@ -146,12 +169,15 @@ MdrSideConstants<T> mdr_side_constants(const Material& m, MdrYieldOnset onset) {
   c.Y = T(m.yield_stress);
   const double xy = mdr_yield_ratio(E_eff, m.yield_stress, onset);
   c.x_yield = std::isfinite(xy) ? T(xy) : std::numeric_limits<T>::infinity();
+  mdr_fill_derived(c);
   return c;
 }
 
-// Pair constants of two materials (either may be a rigid wall material).
+// Pair constants of two materials (either may be a rigid wall material). Side constants: see
+// mdr_side_constants (onset: where the elastic regime ends).
 template <class T>
-MdrPairConstants<T> mdr_pair_constants(const Material& a, const Material& b) {
+MdrPairConstants<T> mdr_pair_constants(const Material& a, const Material& b,
+                                       MdrYieldOnset onset = MdrYieldOnset::elastic_law) {
   const PairProperties pp = pair_properties(a, b);  // host: rejects two rigid bodies
   MdrPairConstants<T> p;
   p.E_star = T(pp.E_star);
@@ -159,6 +185,11 @@ MdrPairConstants<T> mdr_pair_constants(const Material& a, const Material& b) {
   p.c_damp = T(hertz_damping_coefficient(pp.restitution));
   p.mu = T(pp.friction);
   p.gamma = T(pp.surface_energy);
+  p.side_a = a.rigid ? MdrSideConstants<T>{} : mdr_side_constants<T>(a, onset);
+  p.side_b = b.rigid ? MdrSideConstants<T>{} : mdr_side_constants<T>(b, onset);
+  // gamma_s = Delta gamma E* / E_eff,s (mdr_model.hpp header); E_eff > 0 for deformable sides
+  p.gamma_a = a.rigid ? T(0) : T(pp.surface_energy * pp.E_star / double(p.side_a.E_eff));
+  p.gamma_b = b.rigid ? T(0) : T(pp.surface_energy * pp.E_star / double(p.side_b.E_eff));
   return p;
 }
 

@@ -1,9 +1,17 @@
 #pragma once
 // MDR apparent-radius growth, (37)-(39) and Appendix C: plastic deformation is incompressible, so
 // the particle's apparent radius R grows to keep its truncated-sphere volume equal to V_o plus the
-// elastic volume change. The force pass adds each side's terms to per-particle sums with
-// atomic_add (mdr_growth_add_side); a per-particle kernel then applies them and resets the sums
-// (mdr_update_radii, design.md section 4 step 4).
+// elastic volume change. The force pass adds each side's terms to per-particle sums
+// (mdr_growth_add_side) through the accumulation policy of compute/particle_sums.hpp (per-thread
+// copies on host backends, atomics on GPUs); a per-particle kernel then applies them and resets
+// the sums (mdr_update_radii, design.md section 4 step 4).
+//
+// Sequence for a host: attach() (Mdr::bind) once; then per step the force pass(es), then
+// mdr_update_radii (Mdr::update_radii). mdr_update_radii first adds the pass's per-thread copies
+// into eps_sum/numerator/denominator (ParticleSum::end), applies them, zeroes them and clears the
+// copies for the next pass (ParticleSum::begin), so no separate begin call is needed; attach()
+// leaves the copies cleared as well. Values written into eps_sum/numerator/denominator directly
+// (tests) are kept and applied by the next update.
 //
 // Per side (particle p, side force F along the normal into p, apparent overlap delta, delta_o =
 // delta - (R - R_o)):
@@ -19,6 +27,7 @@
 //   -(V_new - V_old) of the whole particle, added in the update kernel.
 // Update: dR = max(numerator / D, 0), D = denominator - 4 pi R^2, with the guards of MdrOptions
 // (D <= -denominator_floor 4 pi R^2; R <= radius_cap R_o; V >= volume_floor V_o), each counted.
+#include <epac/compute/particle_sums.hpp>
 #include <epac/core/kokkos_compat.hpp>
 #include <epac/models/mdr/mdr_parameters.hpp>
 
@@ -39,13 +48,18 @@ struct MdrGrowthState {
   Kokkos::View<T*, Device> radius0;  // R_o (the particles' view)
   Kokkos::View<T*, Device> radius;   // R (the particles' view; updated here)
   Kokkos::View<T*, Device> volume;   // V, MDR (39)
-  Kokkos::View<T*, Device> eps_sum;  // sum of the particle's Christoffersen terms (38)
-  Kokkos::View<T*, Device> numerator, denominator;  // sums of (37)
+  // The three sums, columns of one n x 3 view accumulated through one ParticleSum (one access
+  // object per contact, one reduction of the per-thread copies per step):
+  using sum_view = Kokkos::View<T*, Kokkos::LayoutLeft, Device>;
+  enum : int { kEps = 0, kNumerator = 1, kDenominator = 2 };
+  ParticleSum<T* [3], Device> sums;
+  sum_view eps_sum;  // sum of the particle's Christoffersen terms (38): column kEps
+  sum_view numerator, denominator;  // sums of (37): columns kNumerator, kDenominator
   Kokkos::View<int*, Device> guard_hits;  // cumulative counts, MdrGrowthGuard
   MdrGrowthRule rule = MdrGrowthRule::plastic_loading;
   T radius_cap = T(1.5), denominator_floor = T(0.05), volume_floor = T(0.1);
 
-  bool bound() const { return volume.extent(0) > 0; }
+  KOKKOS_INLINE_FUNCTION bool bound() const { return volume.extent(0) > 0; }
 
   // Host: attaches the particle radii and allocates V (= V_o) and the sums (zero).
   void attach(const Kokkos::View<T*, Device>& r0, const Kokkos::View<T*, Device>& r,
@@ -54,9 +68,11 @@ struct MdrGrowthState {
     radius = r;
     const int n = static_cast<int>(r0.extent(0));
     volume = Kokkos::View<T*, Device>(label + ".volume", n);
-    eps_sum = Kokkos::View<T*, Device>(label + ".eps_sum", n);
-    numerator = Kokkos::View<T*, Device>(label + ".dR_numerator", n);
-    denominator = Kokkos::View<T*, Device>(label + ".dR_denominator", n);
+    typename ParticleSum<T* [3], Device>::target_view all(label + ".growth_sums", n);
+    sums = ParticleSum<T* [3], Device>(all);  // copies start cleared
+    eps_sum = Kokkos::subview(all, Kokkos::ALL, int(kEps));
+    numerator = Kokkos::subview(all, Kokkos::ALL, int(kNumerator));
+    denominator = Kokkos::subview(all, Kokkos::ALL, int(kDenominator));
     guard_hits = Kokkos::View<int*, Device>(label + ".guard_hits", kMdrGuardCount);
     auto V = volume;
     auto R0 = radius0;
@@ -68,41 +84,44 @@ struct MdrGrowthState {
   }
 };
 
-// Force pass, one side of a contact on particle p. F: the side's MDR force (no damping);
-// delta: its apparent overlap; R: the particle's current radius; plastic_loading: yielded, delta at
-// its running maximum and F > 0. Updates the side's history (delta_o_prev, eps_prev).
-template <class T, class Device>
-KOKKOS_INLINE_FUNCTION void mdr_growth_add_side(const MdrGrowthState<T, Device>& gs, int p, T kappa, T F,
-                                                T delta, T R, bool plastic_loading, T& delta_o_prev,
-                                                T& eps_prev) {
+// Force pass, one side of a contact on particle p. acc: this contact's access object of gs.sums
+// (gs.sums.scatter.access()); R0: the particle's R_o; inv_3kappa: 1/(3 kappa) of its material;
+// F: the side's MDR force (no damping); delta: its apparent overlap; R: the particle's current
+// radius; plastic_loading: yielded, delta at its running maximum and F > 0. Updates the side's
+// history (delta_o_prev, eps_prev).
+template <class T, class Device, class Access>
+KOKKOS_FORCEINLINE_FUNCTION void mdr_growth_add_side(const MdrGrowthState<T, Device>& gs, const Access& acc, int p,
+                                                     T R0, T inv_3kappa, T F, T delta, T R, bool plastic_loading,
+                                                     T& delta_o_prev, T& eps_prev) {
   const T pi = constants<T>::pi;
-  const T R0 = gs.radius0(p);
   const T V = gs.volume(p);  // >= volume_floor V_o > 0 (update kernel guard)
   const T b = math::max(R - delta, T(0));  // branch length; >= 0 past the centre (guard)
-  const T eps = -F * b / (T(3) * kappa * V);
-  Kokkos::atomic_add(&gs.eps_sum(p), eps);
+  const T eps = -F * b * inv_3kappa / V;
+  acc(p, int(MdrGrowthState<T, Device>::kEps)) += eps;
   const T delta_o = delta - (R - R0);
-  const T ddo = delta_o - delta_o_prev;
   const bool contributes =
       gs.rule == MdrGrowthRule::plastic_loading ? plastic_loading : (delta > T(0));
   if (contributes) {
+    const T ddo = delta_o - delta_o_prev;
     T num = -pi * ddo * (T(2) * delta_o * R0 - delta_o * delta_o + R * R - R0 * R0);
     if (gs.rule == MdrGrowthRule::plastic_loading) {
       const T V0 = T(4) / T(3) * pi * R0 * R0 * R0;
       num -= V0 * (eps - eps_prev);
     }
-    Kokkos::atomic_add(&gs.numerator(p), num);
-    Kokkos::atomic_add(&gs.denominator(p), T(2) * pi * R * (delta_o + R - R0));
+    acc(p, int(MdrGrowthState<T, Device>::kNumerator)) += num;
+    acc(p, int(MdrGrowthState<T, Device>::kDenominator)) += T(2) * pi * R * (delta_o + R - R0);
   }
   delta_o_prev = delta_o;
   eps_prev = eps;
 }
 
 // Per-particle kernel: applies (37) and (39), resets the sums. R never decreases.
+// Adds the pass's per-thread copies first and clears them after (see the header).
 template <class T, class Device>
 void mdr_update_radii(const MdrGrowthState<T, Device>& gs) {
   const int n = static_cast<int>(gs.volume.extent(0));
-  const MdrGrowthState<T, Device> s = gs;
+  MdrGrowthState<T, Device> s = gs;  // shallow: shares the views and the copies
+  s.sums.end();
   Kokkos::parallel_for(
       "epac::mdr_update_radii", Kokkos::RangePolicy<typename Device::execution_space>(0, n),
       KOKKOS_LAMBDA(int p) {
@@ -137,6 +156,7 @@ void mdr_update_radii(const MdrGrowthState<T, Device>& gs) {
         s.numerator(p) = T(0);
         s.denominator(p) = T(0);
       });
+  s.sums.begin();
 }
 
 }  // namespace epac

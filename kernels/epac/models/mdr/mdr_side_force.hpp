@@ -46,33 +46,41 @@ struct MdrPlasticShape {
   bool ratio_floored;
 };
 
+// inv_R = 1/R (the caller has it). Uses the precomputed constants of MdrSideConstants.
 template <class T>
-KOKKOS_INLINE_FUNCTION MdrPlasticShape<T> mdr_plastic_shape(const MdrSideConstants<T>& c, T delta_max,
-                                                            T R, T c_A) {
+KOKKOS_FORCEINLINE_FUNCTION MdrPlasticShape<T> mdr_plastic_shape(const MdrSideConstants<T>& c, T delta_max,
+                                                                 T R, T inv_R, T c_A) {
   MdrPlasticShape<T> s;
   const T pi = constants<T>::pi;
-  s.p_Y = c.Y * (T(1.75) * math::exp(T(-4.4) * delta_max / R) + T(1));
+  s.p_Y = c.Y + c.Y_hard * math::exp(T(-4.4) * delta_max * inv_R);  // (16) with (21)
   // (36). Domain: the radicand is >= delta_Y R > 0 for delta_Y <= delta_max <= R. Past the equator
   // (delta_max > R) the cap radius of the truncated sphere would shrink; the equator value is kept.
   const T xm = math::min(delta_max, R);
-  const T a2 = math::max(T(2) * xm * R - xm * xm + c_A / pi, T(1e-12) * R * R);
-  s.a_max = math::sqrt(a2);
-  s.A = T(4) * s.p_Y / c.E_eff * s.a_max;
+  const T a2 = math::max(T(2) * xm * R - xm * xm + c_A * (T(1) / pi), T(1e-12) * R * R);
+  s.a_max = math::sqrt(a2);  // a2 > 0 (floor above)
+  s.A = c.four_over_E * s.p_Y * s.a_max;
   s.B = T(2) * s.a_max;
   const T half = T(0.5) * s.A;  // delta_1D,max^e
   // (33): depth of the particle centre below the undeformed half-space surface; >= 0 (guard).
   const T zR = math::max(R - (delta_max - half), T(0));
-  // (34) with F_max/(pi a_max^2) = p_Y exactly (F_max = E A B pi/8, (32) at depth A/2).
-  // sqrt(a^2 + z^2) >= a_max > 0; sqrt(a^2+z^2) - z = a^2/(sqrt(a^2+z^2) + z) avoids cancellation.
+  // (34) with F_max/(pi a_max^2) = p_Y exactly (F_max = E A B pi/8, (32) at depth A/2), divided by
+  // A/2 = 2 p_Y a_max/E_eff; with sqrt(a^2+z^2) - z = a^2/(rho + z) (no cancellation) it reduces to
+  //   delta_R/(A/2) = a_max (E_eff (nu-1)/(2G) rho - E_eff/(4G) z_R) / (rho (rho + z_R)),
+  // rho = sqrt(a_max^2 + z_R^2): p_Y cancels and one division remains. rho >= a_max > 0, z_R >= 0,
+  // so the denominator is > 0; both numerator terms are <= 0 (nu < 1): no cancellation.
   const T rho = math::sqrt(a2 + zR * zR);
-  const T gap = a2 / (rho + zR);
-  const T delta_R = s.p_Y * (T(2) * a2 * (c.nu - T(1)) - zR * (T(2) * c.nu - T(1)) * gap) /
-                    (T(2) * c.G * rho);
-  const T r = T(1) + delta_R / half;  // half > 0 since p_Y, a_max > 0
+  const T r = T(1) + s.a_max * (c.r_rho * rho - c.r_z * zR) / (rho * (rho + zR));
   s.ratio_floored = r < mdr_min_recovery_ratio<T>();
   s.ratio = s.ratio_floored ? mdr_min_recovery_ratio<T>() : r;
   s.delta_p = delta_max - half * s.ratio;
   return s;
+}
+
+// Without inv_R (tests, host tools).
+template <class T>
+KOKKOS_INLINE_FUNCTION MdrPlasticShape<T> mdr_plastic_shape(const MdrSideConstants<T>& c, T delta_max, T R,
+                                                            T c_A) {
+  return mdr_plastic_shape(c, delta_max, R, T(1) / R, c_A);  // R > 0 (host validation)
 }
 
 // What one side evaluation produces.
@@ -100,32 +108,43 @@ struct MdrSideResult {
 // unloading branch that one-increment lag made the curve depend on the step (0.75% change on
 // halving a 2e-4 R_o step at E/Y = 50); with (19), delta - delta_max = delta_o - delta_o,max does
 // not see the lag. Without growth the two definitions coincide.
+//
+// Hot path (issue: per side, only the arithmetic of the current regime): the elastic regime is
+// one asin and two sqrt (ellipse force and width); plastic loading (delta at delta_max, the
+// common compaction step) is d = A/2 exactly, where (30) is E A B pi/8 and the width B/2, so it
+// costs one exp and two sqrt and no inverse trigonometric function; unloading adds the asin.
 template <bool Plasticity, bool Adhesion, class T>
-KOKKOS_INLINE_FUNCTION MdrSideResult<T> mdr_side_force(const MdrSideConstants<T>& c, T gamma, T xi,
-                                                       T delta, T R, T growth, MdrSideState<T>& s) {
+KOKKOS_FORCEINLINE_FUNCTION MdrSideResult<T> mdr_side_force(const MdrSideConstants<T>& c, T gamma, T xi,
+                                                            T delta, T R, T growth, MdrSideState<T>& s) {
   MdrSideResult<T> out;
   const T pi = constants<T>::pi;
   const T delta_o = delta - growth;
   out.loading = delta_o >= s.delta_o_max;
+  // delta - delta_max = delta_o - delta_o,max by (19) (exactly 0 on loading, <= 0 otherwise)
+  // (the running maximum is plasticity history; without it delta_max stays R - R_o = 0)
+  T below_max = T(0);
   if (Plasticity) {
     if (out.loading) s.delta_o_max = delta_o;
-    // Sharp switch (5.6.5), tested on loading only: unloading lowers the elastic pressure while
-    // p_Y(delta_max) stays. x_yield = +inf: never yields.
-    if (s.yielded == T(0) && out.loading && delta > c.x_yield * R) {
-      const T dY = c.x_yield * R;
-      s.yielded = T(1);
-      s.c_A = pi * (dY * dY - dY * R);  // (43)
-    }
+    else below_max = delta_o - s.delta_o_max;
   }
   const T delta_max = s.delta_o_max + growth;  // (19)
   out.delta_max = delta_max;
+  if (Plasticity) {
+    // Sharp switch (5.6.5), tested on loading only: unloading lowers the elastic pressure while
+    // p_Y(delta_max) stays. x_yield = +inf: never yields.
+    if (s.yielded == T(0) && out.loading && delta > c.x_yield * R) {
+      s.yielded = T(1);
+      s.c_A = c.cA_over_R2 * R * R;  // (43): pi (delta_Y^2 - delta_Y R), delta_Y = x_yield R
+    }
+  }
   if (Plasticity && s.yielded != T(0)) {
-    const MdrPlasticShape<T> sh = mdr_plastic_shape(c, delta_max, R, s.c_A);
+    const MdrPlasticShape<T> sh = mdr_plastic_shape(c, delta_max, R, T(1) / R, s.c_A);  // R > 0
     out.plastic = true;
     out.A = sh.A;
     out.B = sh.B;
-    // (35) rewritten as A/2 + (delta - delta_max)/r: the same value, without 0/0 at r -> 0.
-    out.d1De = T(0.5) * sh.A + (delta - delta_max) / sh.ratio;
+    // (35) rewritten as A/2 + (delta - delta_max)/r: the same value, without 0/0 at r -> 0;
+    // ratio >= mdr_min_recovery_ratio > 0. On loading exactly A/2.
+    out.d1De = out.loading ? T(0.5) * sh.A : T(0.5) * sh.A + below_max / sh.ratio;
     out.ratio_floored = sh.ratio_floored;
     s.delta_p = sh.delta_p;
     // (42), plastic branch, with the current delta
