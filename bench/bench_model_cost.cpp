@@ -32,9 +32,12 @@ void run(benchmark::State& state, Model model) {
   ContactHistory<T, D> h(pk.contacts.count, Model::history_size);
   constexpr bool grows = Model::effects::radius_growth;
   if constexpr (grows) model.bind(pk.particles);
+  ForceSums<T, D> sums(pk.particles);  // per-thread copies allocated once, as in a simulation
   for (auto _ : state) {
     zero_forces(pk.particles);
-    compute_pair_forces(model, pk.particles, pk.contacts, h, T(1e-9));
+    sums.begin();
+    compute_pair_forces(model, pk.particles, pk.contacts, h, T(1e-9), sums);
+    sums.end();
     if constexpr (grows) model.update_radii();
     Kokkos::fence();
   }

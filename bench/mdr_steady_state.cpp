@@ -32,9 +32,12 @@ constexpr unsigned ALL = FD | kAdhesion | kPlasticity | kRadiusGrowth;
 template <int Tag, class Model, class P, class H>
 __attribute__((noinline)) void measured_passes(Model& model, P& pk, H& h, int passes) {
   using T = typename Model::scalar_type;
+  ForceSums<T, typename Model::device_type> sums(pk.particles);
   for (int k = 0; k < passes; ++k) {
     zero_forces(pk.particles);
-    compute_pair_forces(model, pk.particles, pk.contacts, h, T(1e-9));
+    sums.begin();
+    compute_pair_forces(model, pk.particles, pk.contacts, h, T(1e-9), sums);
+    sums.end();
     if constexpr (Model::effects::radius_growth) model.update_radii();
     Kokkos::fence();
   }
