@@ -216,18 +216,18 @@ void compute_wall_forces(const Model& model, const Particles<T, Device>& p, cons
       });
 }
 
-// One-call forms for hosts that evaluate a single list per pass (tests, small tools): they make
-// the pass's sums themselves. Per-thread copies are allocated on every call, so a host loop
-// should keep a ForceSums and use the forms above.
+// One-call forms for hosts that evaluate a single list per pass (tests, small tools): atomic adds
+// into p.force / p.torque, as before ForceSums existed. No allocation and no extra kernel per
+// call (on small systems each parallel region costs more than the contacts), but atomics on a
+// CPU cost about as much as the law: a host loop over large lists keeps a ForceSums and uses the
+// forms above.
 template <class Model, class T, class Device>
 void compute_pair_forces(const Model& model, const Particles<T, Device>& p, const ContactList<Device>& c,
                          const ContactHistory<T, Device>& h, T dt,
                          const ContactOutputs<T, Device>& out = {},
                          const ContactForceBuffer<T, Device>& buf = {}) {
-  ForceSums<T, Device> sums(p);
-  sums.begin();
+  const ForceSums<T, Device, AtomicSums> sums(p);  // aliases p.force / p.torque: begin/end are no-ops
   compute_pair_forces(model, p, c, h, dt, sums, out, buf);
-  sums.end();
 }
 
 template <class Model, class T, class Device>
@@ -235,10 +235,8 @@ void compute_wall_forces(const Model& model, const Particles<T, Device>& p, cons
                          const ContactList<Device>& c, const ContactHistory<T, Device>& h, T dt,
                          const ContactOutputs<T, Device>& out = {},
                          const ContactForceBuffer<T, Device>& buf = {}) {
-  ForceSums<T, Device> sums(p);
-  sums.begin();
+  const ForceSums<T, Device, AtomicSums> sums(p);
   compute_wall_forces(model, p, w, c, h, dt, sums, out, buf);
-  sums.end();
 }
 
 }  // namespace epac

@@ -113,11 +113,25 @@ struct SumScatter {
   std::size_t stride = 0;     // its component stride
   std::size_t block = 0;      // elements per thread copy (n x components)
   Kokkos::View<T*, Device> copies;
+  int ncopies = 0;
   token_type token;
 
   KOKKOS_FORCEINLINE_FUNCTION SumAccess<T, Mode> access() const {
     if (Mode == 1) return {copies.data() + block * static_cast<std::size_t>(token.acquire()), stride};
     return {target, stride};
+  }
+  // Element (i, c) of the target plus the pass's per-thread copies, all cleared: for a kernel
+  // that consumes the sums right after the pass (one kernel instead of end + use + begin).
+  KOKKOS_FORCEINLINE_FUNCTION T take(int i, int c = 0) const {
+    const std::size_t e = static_cast<std::size_t>(i) + static_cast<std::size_t>(c) * stride;
+    T v = target[e];
+    target[e] = T(0);
+    if (Mode == 1)
+      for (int t = 0; t < ncopies; ++t) {
+        v += copies(e + t * block);
+        copies(e + t * block) = T(0);
+      }
+    return v;
   }
 };
 
@@ -139,9 +153,10 @@ struct ParticleSum {
     scatter.stride = target_view::rank > 1 ? t.stride(1) : 1;
     const std::size_t comps = target_view::rank > 1 ? t.extent(1) : 1;
     scatter.block = scatter.stride * (comps - 1) + t.extent(0);
+    scatter.ncopies = mode == 1 ? static_cast<int>(scatter.token.size()) : 0;
     if (mode == 1)
       scatter.copies = Kokkos::View<value_type*, Device>(std::string("epac::sums.") + t.label(),
-                                                         scatter.block * static_cast<std::size_t>(scatter.token.size()));
+                                                         scatter.block * static_cast<std::size_t>(scatter.ncopies));
   }
 
   // Clears the per-thread copies (the target keeps its values: the pass adds to them).
@@ -152,7 +167,7 @@ struct ParticleSum {
   void end() {  // host
     if (mode != 1 || target.extent(0) == 0) return;
     const SumScatter<value_type, Device, mode> s = scatter;
-    const int copies = static_cast<int>(s.token.size());
+    const int copies = s.ncopies;
     Kokkos::parallel_for(
         "epac::sums_reduce", Kokkos::RangePolicy<typename Device::execution_space>(0, s.block),
         KOKKOS_LAMBDA(std::size_t e) {

@@ -7,10 +7,10 @@
 // the sums (mdr_update_radii, design.md section 4 step 4).
 //
 // Sequence for a host: attach() (Mdr::bind) once; then per step the force pass(es), then
-// mdr_update_radii (Mdr::update_radii). mdr_update_radii first adds the pass's per-thread copies
-// into eps_sum/numerator/denominator (ParticleSum::end), applies them, zeroes them and clears the
-// copies for the next pass (ParticleSum::begin), so no separate begin call is needed; attach()
-// leaves the copies cleared as well. Values written into eps_sum/numerator/denominator directly
+// mdr_update_radii (Mdr::update_radii). mdr_update_radii takes each particle's sums (the values in
+// eps_sum/numerator/denominator plus the pass's per-thread copies, SumScatter::take), applies
+// them and leaves all of them cleared for the next pass, in one kernel; so no separate begin or
+// end call is needed, and attach() leaves the copies cleared as well. Values written into eps_sum/numerator/denominator directly
 // (tests) are kept and applied by the next update.
 //
 // Per side (particle p, side force F along the normal into p, apparent overlap delta, delta_o =
@@ -116,28 +116,30 @@ KOKKOS_FORCEINLINE_FUNCTION void mdr_growth_add_side(const MdrGrowthState<T, Dev
 }
 
 // Per-particle kernel: applies (37) and (39), resets the sums. R never decreases.
-// Adds the pass's per-thread copies first and clears them after (see the header).
+// The sums are taken (target + per-thread copies, then cleared) inside this one kernel.
 template <class T, class Device>
 void mdr_update_radii(const MdrGrowthState<T, Device>& gs) {
   const int n = static_cast<int>(gs.volume.extent(0));
   MdrGrowthState<T, Device> s = gs;  // shallow: shares the views and the copies
-  s.sums.end();
+  const auto sums = s.sums.scatter;
   Kokkos::parallel_for(
       "epac::mdr_update_radii", Kokkos::RangePolicy<typename Device::execution_space>(0, n),
       KOKKOS_LAMBDA(int p) {
         const T pi = constants<T>::pi;
         const T R = s.radius(p), R0 = s.radius0(p);
         const T V0 = T(4) / T(3) * pi * R0 * R0 * R0;
-        T factor = T(1) + s.eps_sum(p);  // (39)
+        const T eps_sum = sums.take(p, MdrGrowthState<T, Device>::kEps);
+        T num = sums.take(p, MdrGrowthState<T, Device>::kNumerator);
+        const T den = sums.take(p, MdrGrowthState<T, Device>::kDenominator);
+        T factor = T(1) + eps_sum;  // (39)
         if (factor < s.volume_floor) {
           factor = s.volume_floor;
           Kokkos::atomic_add(&s.guard_hits(kMdrGuardVolume), 1);
         }
         const T V_new = V0 * factor;
-        T num = s.numerator(p);
         if (s.rule == MdrGrowthRule::all_contacts) num -= V_new - s.volume(p);  // Delta V^e
         // (37). D < 0 in normal use; near 0 under high confinement (Appendix C): floored.
-        T D = s.denominator(p) - T(4) * pi * R * R;
+        T D = den - T(4) * pi * R * R;
         const T D_max = -s.denominator_floor * T(4) * pi * R * R;
         if (D > D_max) {
           Kokkos::atomic_add(&s.guard_hits(kMdrGuardDenominator), 1);
@@ -152,11 +154,7 @@ void mdr_update_radii(const MdrGrowthState<T, Device>& gs) {
         }
         s.radius(p) = R_new;
         s.volume(p) = V_new;
-        s.eps_sum(p) = T(0);
-        s.numerator(p) = T(0);
-        s.denominator(p) = T(0);
       });
-  s.sums.begin();
 }
 
 }  // namespace epac
