@@ -7,7 +7,8 @@
 # The prefix may also come from EPAC_KOKKOS_CUDA_ROOT or Kokkos_ROOT; otherwise the usual
 # prefixes are searched. Without a Kokkos with CUDA it prints "skipped: no Kokkos with CUDA" and
 # exits 0. Environment: EPAC_DEVICE_BUILD_DIR (default build-device), EPAC_DEVICE_TARGETS (default:
-# every library test target), EPAC_CMAKE_ARGS (extra configure arguments, e.g. -DKokkos_ARCH_...).
+# every library test target), EPAC_DEVICE_FLAGS (default -Werror -Xcudafe --promote_warnings, for
+# nvcc_wrapper), EPAC_CMAKE_ARGS (extra configure arguments).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 
@@ -29,9 +30,10 @@ compiler="${CXX:-}"
 if [ -x "$prefix/bin/nvcc_wrapper" ]; then compiler="$prefix/bin/nvcc_wrapper"; fi
 build="${EPAC_DEVICE_BUILD_DIR:-$root/build-device}"
 echo "Kokkos with CUDA at $prefix; compiler ${compiler:-default}; build dir $build"
-# -Werror for the host compiler (through nvcc_wrapper), --Werror all-warnings for nvcc, and
-# --promote_warnings for its front end (the cross-execution-space diagnostics).
-flags="-Werror -Xcudafe --promote_warnings --Werror all-warnings"
+# -Werror for the host compiler (nvcc_wrapper passes it on) and --promote_warnings for nvcc's
+# front end (cudafe: the cross-execution-space diagnostics 20011-20014). Both spellings are ones
+# nvcc_wrapper knows (it would hand an unknown nvcc flag such as --Werror to the host compiler).
+flags="${EPAC_DEVICE_FLAGS:--Werror -Xcudafe --promote_warnings}"
 # shellcheck disable=SC2086
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DKokkos_ROOT="$prefix" \
   ${compiler:+-DCMAKE_CXX_COMPILER="$compiler"} -DCMAKE_CXX_FLAGS="$flags" \

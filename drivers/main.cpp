@@ -1,4 +1,5 @@
 // epac-run SCENE.toml [--out DIR] [--threads N] [--steps N] [--precision double|float] [--quiet]
+// epac-run --version
 // Parses and validates the scene before Kokkos starts, so bad input is refused before anything
 // runs or is written. Exit status: 0 success, 1 runtime failure, 2 invalid input.
 #include "driver/model_registry.hpp"
@@ -6,6 +7,7 @@
 
 #include <CLI/CLI.hpp>
 #include <Kokkos_Core.hpp>
+#include <epac/core/build_info.hpp>
 #include <epac/core/kokkos_compat.hpp>
 
 #include <cstdio>
@@ -27,6 +29,9 @@ int main(int argc, char** argv) {
   app.add_option("--precision", opt.precision, "scalar type: double (default) or float")
       ->check(CLI::IsMember({"double", "float"}));
   app.add_flag("--quiet", opt.quiet, "no informational output and no progress line");
+  // --version: epac's version, Kokkos's version and its enabled backends, e.g.
+  // "epac 0.1.0 (Kokkos 3.4.1: Serial OpenMP)"; exits 0 without a scene.
+  app.set_version_flag("--version", epac::build_info());
   CLI11_PARSE(app, argc, argv);
   opt.progress = isatty(fileno(stdout)) != 0;
 

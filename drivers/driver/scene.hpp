@@ -85,6 +85,7 @@ struct RunSpec {
   double skin = -1;                  // < 0: 0.2 x the smallest radius (see finish_scene)
   bool contact_output = false;       // contacts.csv at every output step
   bool particle_output = false;      // particles.csv at every output step
+  std::string snapshot_format = "none";  // "vtp": ParaView/OVITO snapshots at every output step
 };
 
 struct Scene {
