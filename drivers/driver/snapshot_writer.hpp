@@ -5,9 +5,9 @@
 // snapshot so an interrupted run still opens.
 //
 // Why .vtp + .pvd: ParaView opens a .pvd as a time series with named point arrays (Glyph or
-// Point Gaussian by "radius" draws the spheres); OVITO 3 reads the same files (its VTP particle
-// reader maps "radius" and "velocity"; File > Load File on the .pvd or a .vtp series). A LAMMPS
-// dump would serve OVITO only. ASCII keeps the files readable and the test parser tiny; the
+// Point Gaussian by "radius" draws the spheres); OVITO 3's reader of ParaView VTP particle files
+// takes the same files (File > Load File on a .vtp series or the .pvd). A LAMMPS dump would
+// serve OVITO only. ASCII keeps the files readable and the test parser tiny; the
 // cost is size (about 200 bytes per particle per snapshot).
 #include <cstdint>
 #include <fstream>
