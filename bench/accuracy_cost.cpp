@@ -113,7 +113,8 @@ int main(int argc, char* argv[]) {
   if (!csv.empty()) {
     FILE* f = std::fopen(csv.c_str(), "w");
     if (!f) { std::fprintf(stderr, "cannot write %s\n", csv.c_str()); return 1; }
-    std::fprintf(f, "model,precision,n_per_tc,dt,restitution,abs_error_restitution,rel_error_peak_force,ns_per_contact,ns_per_contact_per_tc\n");
+    std::fprintf(f, "model,precision,n_per_tc,dt [s],restitution [-],abs_error_restitution [-],rel_error_peak_force [-],"
+                    "ns_per_contact [ns],ns_per_contact_per_tc [ns]\n");
     for (const auto& r : rows)
       std::fprintf(f, "%s,%s,%d,%.6e,%.6f,%.6e,%.6e,%.3f,%.3f\n", r.model.c_str(), r.precision.c_str(), r.n_per_tc, r.dt,
                    r.e, r.e_err, r.f_err, r.ns, r.ns_per_tc);

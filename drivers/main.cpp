@@ -1,5 +1,6 @@
 // epac-run SCENE.toml [--out DIR] [--threads N] [--steps N] [--precision double|float] [--quiet]
 //          [--phase-times]
+// epac-run --version
 // Parses and validates the scene before Kokkos starts, so bad input is refused before anything
 // runs or is written. Exit status: 0 success, 1 runtime failure, 2 invalid input.
 #include "driver/model_registry.hpp"
@@ -7,6 +8,7 @@
 
 #include <CLI/CLI.hpp>
 #include <Kokkos_Core.hpp>
+#include <epac/core/build_info.hpp>
 #include <epac/core/kokkos_compat.hpp>
 
 #include <cstdio>
@@ -33,6 +35,9 @@ int main(int argc, char** argv) {
   app.add_option("--time-after", opt.time_after,
                  "also time the steps after N alone (summary.json \"timed\"; e.g. a hold phase)")
       ->check(CLI::Range(int64_t(0), int64_t(1000000000000LL)));
+  // --version: epac's version, Kokkos's version and its enabled backends, e.g.
+  // "epac 0.1.0 (Kokkos 3.4.1: Serial OpenMP)"; exits 0 without a scene.
+  app.set_version_flag("--version", epac::build_info());
   CLI11_PARSE(app, argc, argv);
   opt.progress = isatty(fileno(stdout)) != 0;
 

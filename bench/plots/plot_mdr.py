@@ -34,12 +34,13 @@ EY_VALUES = [200, 100, 50, 25, 12.5, 6.25]  # Figs 8-11 (a)-(f)
 
 
 def read_csv(path):
-    """Columns by name; numbers where they parse, else strings."""
+    """Columns by name without the unit ("time [s]" -> "time"); numbers where they parse, else strings."""
     with open(path, newline="") as f:
         rows = list(csv.reader(f))
     head, body = rows[0], rows[1:]
     cols = {}
     for k, name in enumerate(head):
+        name = name.split(" [")[0]
         vals = [r[k] for r in body]
         try:
             cols[name] = np.array([float(v) for v in vals])

@@ -1,4 +1,5 @@
 #include "calibrate/curve_calibration.hpp"
+#include "calibrate/force_overlap_csv.hpp"
 
 #include <algorithm>
 #include <cmath>

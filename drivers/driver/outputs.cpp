@@ -1,5 +1,6 @@
 #include "driver/outputs.hpp"
 
+#include <epac/core/build_info.hpp>
 #include <nlohmann/json.hpp>
 
 #include <cstdio>
@@ -21,11 +22,12 @@ TimeseriesWriter::TimeseriesWriter(const std::string& path, const std::vector<st
                                    bool box)
     : out_(path), driven_(driven), box_(box) {
   if (!out_) throw std::runtime_error("cannot write '" + path + "'");
-  out_ << "step,time,ke_translational,ke_rotational,pe_gravity,pair_contacts,wall_contacts,pair_list,wall_list,"
-          "max_overlap_ratio";
-  for (const auto& w : walls) out_ << ",force_" << w << ",displacement_" << w;
-  if (driven_) out_ << ",driven_fx,driven_fy,driven_fz";
-  if (box_) out_ << ",box_lx,box_ly,box_lz";
+  // Units in the headers (csv_columns.hpp): SI; counts have none.
+  out_ << "step,time [s],ke_translational [J],ke_rotational [J],pe_gravity [J],pair_contacts,wall_contacts,"
+          "pair_list,wall_list,max_overlap_ratio [-]";
+  for (const auto& w : walls) out_ << ",force_" << w << " [N],displacement_" << w << " [m]";
+  if (driven_) out_ << ",driven_fx [N],driven_fy [N],driven_fz [N]";
+  if (box_) out_ << ",box_lx [m],box_ly [m],box_lz [m]";
   out_ << '\n' << std::setprecision(10);
 }
 
@@ -43,7 +45,7 @@ ContactsWriter::ContactsWriter(const std::string& path, const std::vector<std::s
                                const std::vector<std::string>& wall_names)
     : out_(path), walls_(wall_names) {
   if (!out_) throw std::runtime_error("cannot write '" + path + "'");
-  out_ << "step,time,i,j,wall,wall_name,overlap,force";
+  out_ << "step,time [s],i,j,wall,wall_name,overlap [m],force [N]";
   for (const auto& n : extra_names) out_ << ',' << n;
   out_ << '\n' << std::setprecision(10);
 }
@@ -60,7 +62,7 @@ void ContactsWriter::write(std::int64_t step, double time, const ContactRows& r)
 
 ParticlesWriter::ParticlesWriter(const std::string& path) : out_(path) {
   if (!out_) throw std::runtime_error("cannot write '" + path + "'");
-  out_ << "step,time,id,x,y,z,R,R0,volume\n" << std::setprecision(10);
+  out_ << "step,time [s],id,x [m],y [m],z [m],R [m],R0 [m],volume [m^3]\n" << std::setprecision(10);
 }
 
 void ParticlesWriter::write(std::int64_t step, double time, const std::vector<double>& x,
@@ -108,6 +110,9 @@ void write_summary_json(const std::string& path, const RunSummary& s) {
   j["effects"] = s.effects;
   j["history_fields"] = s.history_fields;
   j["bytes_per_contact"] = s.bytes_per_contact;
+  j["epac_version"] = epac::version_string;  // what produced this file (core/build_info.hpp)
+  j["kokkos_version"] = epac::kokkos_version_string();
+  j["kokkos_backends"] = epac::kokkos_backends();
   if (!s.model_counters.empty()) {
     nlohmann::json c = nlohmann::json::object();
     for (const auto& kv : s.model_counters) c[kv.first] = kv.second;

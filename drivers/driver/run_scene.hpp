@@ -12,10 +12,13 @@
 #include "driver/phase_times.hpp"
 #include "driver/run_options.hpp"
 #include "driver/scene.hpp"
+#include "driver/snapshot_capture.hpp"
+#include "driver/snapshot_writer.hpp"
 #include "driver/spatial_sort.hpp"
 
 #include <epac/compute/contact_forces.hpp>
 #include <epac/compute/particle_sums.hpp>
+#include <epac/params/state_validation.hpp>
 #include <epac/state/particles.hpp>
 #include <epac/state/walls.hpp>
 
@@ -264,6 +267,7 @@ RunSummary run_scene(const Scene& scene, const RunOptions& opt) {
   const bool any_driven = scene.any_driven();
   Walls<T, Device> walls;
   WallDriver<T, Device> wall_driver(scene, walls);
+  validate(p, walls, model);  // host: material indices, radii, ids, unit normals (params/state_validation.hpp)
   DrivenMotion<T, Device> driven_motion(scene);
   const Vec3<T> g(T(scene.gravity[0]), T(scene.gravity[1]), T(scene.gravity[2]));
   const T dt = T(scene.run.dt);
@@ -309,6 +313,8 @@ RunSummary run_scene(const Scene& scene, const RunOptions& opt) {
   if (scene.run.contact_output)
     contacts_csv = std::make_unique<ContactsWriter>(opt.out_dir + "/contacts.csv", F::contact_extra_names(), wall_names);
   if (scene.run.particle_output) particles_csv = std::make_unique<ParticlesWriter>(opt.out_dir + "/particles.csv");
+  std::unique_ptr<SnapshotWriter> snapshots;  // [run] snapshot_format = "vtp": particles.pvd + snapshots/*.vtp
+  if (scene.run.snapshot_format == "vtp") snapshots = std::make_unique<SnapshotWriter>(opt.out_dir);
 
   // Forces are zeroed by kick_drift (and are zero on allocation before the first pass).
   // `step`: the step whose forces these are (for contacts.csv).
@@ -371,6 +377,7 @@ RunSummary run_scene(const Scene& scene, const RunOptions& opt) {
     for (int d = 0; d < 3; ++d) s.box_edge[d] = box.edge()[d];
     csv.write(s);
     if (particles_csv) write_particles(step);
+    if (snapshots) snapshots->write(capture_snapshot<F>(model, p, step, s.time));
     active_sum += static_cast<double>(s.pair_contacts + s.wall_contacts);
     ++samples;
     if (opt.time_after >= 0 && step > opt.time_after) {

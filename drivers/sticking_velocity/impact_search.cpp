@@ -1,5 +1,6 @@
 #include "sticking_velocity/impact_search.hpp"
 
+#include "driver/csv_columns.hpp"
 #include "driver/model_registry.hpp"
 #include "driver/models/nan2022_options.hpp"
 
@@ -66,8 +67,9 @@ ImpactRun classify_timeseries(const std::string& csv_path, const ImpactScene& s,
   const auto header = split_commas(line);
   int col_f = -1, col_ke = -1;
   for (int k = 0; k < static_cast<int>(header.size()); ++k) {
-    if (header[k] == "force_" + s.wall_name) col_f = k;
-    if (header[k] == "ke_translational") col_ke = k;
+    const std::string name = driver::csv_column_name(header[k]);  // "force_top [N]" -> "force_top"
+    if (name == "force_" + s.wall_name) col_f = k;
+    if (name == "ke_translational") col_ke = k;
   }
   if (col_f < 0 || col_ke < 0)
     throw std::runtime_error(csv_path + ": no force_" + s.wall_name + " or ke_translational column");

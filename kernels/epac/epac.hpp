@@ -1,10 +1,13 @@
 #pragma once
 // Umbrella header: every public epac header (convenience; include the ones you use for faster
-// builds). Not included: params/nan2022/nan2022_calibration.hpp and force_overlap_csv.hpp, the
-// host-side calibration tool, which needs Eigen 3.
+// builds). Not included: params/nan2022/nan2022_calibration.hpp, the host-side calibration,
+// which needs Eigen 3.
+#include <epac/version.hpp>
+
 #include <epac/compute/contact_forces.hpp>
 #include <epac/compute/deterministic_reduce.hpp>
 #include <epac/compute/history_remap.hpp>
+#include <epac/core/build_info.hpp>
 #include <epac/core/kokkos_compat.hpp>
 #include <epac/core/root_solve.hpp>
 #include <epac/core/vec3.hpp>
@@ -31,6 +34,7 @@
 #include <epac/params/nan2022/nan2022_sticking_velocity.hpp>
 #include <epac/params/nan2022/nan2022_time_step.hpp>
 #include <epac/params/restitution_damping.hpp>
+#include <epac/params/state_validation.hpp>
 #include <epac/params/validation.hpp>
 #include <epac/state/contact_history.hpp>
 #include <epac/state/contact_list.hpp>

@@ -41,3 +41,23 @@ TEMPLATE_LIST_TEST_CASE("bracketed Newton finds roots, caps iterations, reports 
   CHECK(f(4) <= 5);
   CHECK(f(5) == 0);
 }
+
+// The host-only loop (parameter set-up with std:: maths) takes the same steps as the device loop.
+TEMPLATE_TEST_CASE("bracketed_newton_host gives the same bits as bracketed_newton", "[core][root]", float, double) {
+  using T = TestType;
+  auto cubic = [](T x, T& f, T& df) { f = x * x * x - T(8); df = T(3) * x * x; };
+  auto flat = [](T x, T& f, T& df) { f = std::pow(x, T(3)) - T(1e-3); df = T(3) * x * x; };  // std:: maths: host only
+  for (auto tol : {T(1e-6), T(0)}) {
+    const auto a = bracketed_newton<T>(cubic, T(0), T(100), tol, 7);
+    const auto b = bracketed_newton_host<T>(cubic, T(0), T(100), tol, 7);
+    CHECK(a.x == b.x);
+    CHECK(a.iters == b.iters);
+    CHECK(a.converged == b.converged);
+  }
+  const auto r = bracketed_newton_host<T>(flat, T(-1), T(1), T(1e-6));
+  CHECK(r.converged);
+  CHECK(r.x == Approx(0.1).epsilon(1e-4));
+  const auto none = bracketed_newton_host<T>(flat, T(1), T(3), T(1e-6));
+  CHECK_FALSE(none.bracketed);
+  CHECK(none.x == T(1));
+}

@@ -1,5 +1,6 @@
 #pragma once
 // Helpers of the driver tests: a fresh output folder, timeseries CSVs by column, a scene run.
+#include "driver/csv_columns.hpp"
 #include "driver/model_registry.hpp"
 #include "driver/scene.hpp"
 
@@ -20,7 +21,7 @@ inline std::filesystem::path fresh_out_dir(const std::string& tag) {
          ("epac-driver-" + std::to_string(getpid()) + "-" + tag + "-" + std::to_string(counter++));
 }
 
-// A CSV with a header line, as columns by name (numbers only).
+// A CSV with a header line, as columns by name without the unit ("time [s]" -> "time"; numbers only).
 inline std::map<std::string, std::vector<double>> read_csv_columns(const std::filesystem::path& path) {
   std::ifstream in(path);
   std::string line;
@@ -29,7 +30,7 @@ inline std::map<std::string, std::vector<double>> read_csv_columns(const std::fi
   {
     std::stringstream s(line);
     std::string c;
-    while (std::getline(s, c, ',')) names.push_back(c);
+    while (std::getline(s, c, ',')) names.push_back(driver::csv_column_name(c));  // without the unit
   }
   std::map<std::string, std::vector<double>> cols;
   for (const auto& n : names) cols[n];

@@ -1,6 +1,7 @@
 // Short end-to-end runs of the driver: outputs exist and say what the physics says.
 #include <catch2/catch.hpp>
 
+#include "driver/csv_columns.hpp"
 #include "driver/model_registry.hpp"
 #include "driver/scene.hpp"
 
@@ -34,7 +35,7 @@ std::map<std::string, std::vector<double>> read_csv(const fs::path& path) {
   {
     std::stringstream s(line);
     std::string c;
-    while (std::getline(s, c, ',')) names.push_back(c);
+    while (std::getline(s, c, ',')) names.push_back(driver::csv_column_name(c));  // without the unit
   }
   std::map<std::string, std::vector<double>> cols;
   while (std::getline(in, line)) {

@@ -31,8 +31,7 @@ TEMPLATE_LIST_TEST_CASE("history follows its contact through a rebuild", "[remap
   }
   const int fields = 4;
   auto old_list = make_list<D>({{0, 1}, {1, 2}, {2, 3}, {3, 4}, {4, 5}});
-  ContactHistory<T, D> old(old_list.count, fields);
-  Kokkos::deep_copy(old.keys, pair_contact_keys(p, old_list));
+  ContactHistory<T, D> old(pair_contact_keys(p, old_list), fields);
   {
     auto d = Kokkos::create_mirror_view(old.data);
     for (int k = 0; k < old_list.count; ++k)
@@ -53,8 +52,7 @@ TEMPLATE_LIST_TEST_CASE("history follows its contact through a rebuild", "[remap
   }
   // Wall keys are (gid, wall): the same particle on another wall is a new contact.
   auto wl_old = make_list<D>({{2, 0}, {3, 1}});
-  ContactHistory<T, D> wold(2, 1);
-  Kokkos::deep_copy(wold.keys, wall_contact_keys(p, wl_old));
+  ContactHistory<T, D> wold(wall_contact_keys(p, wl_old), 1);
   Kokkos::deep_copy(wold.data, 5.0);
   auto wl_new = make_list<D>({{2, 1}, {3, 1}});
   auto wfresh = remap_history(wold, wall_contact_keys(p, wl_new), 1);
@@ -75,8 +73,7 @@ TEMPLATE_LIST_TEST_CASE("remap of a large shuffled list keeps every row", "[rema
   for (int i = 0; i + 1 < n; ++i) a.push_back({i, i + 1});
   for (int i = n - 2; i >= 0; i -= 2) b.push_back({i + 1, i});  // every other contact, reversed
   auto la = make_list<D>(a), lb = make_list<D>(b);
-  ContactHistory<T, D> old(la.count, 1);
-  Kokkos::deep_copy(old.keys, pair_contact_keys(p, la));
+  ContactHistory<T, D> old(pair_contact_keys(p, la), 1);
   Kokkos::parallel_for(Kokkos::RangePolicy<typename D::execution_space>(0, la.count), KOKKOS_LAMBDA(int k) {
     old.data(k, 0) = T(k);
   });
@@ -85,4 +82,34 @@ TEMPLATE_LIST_TEST_CASE("remap of a large shuffled list keeps every row", "[rema
   int wrong = 0;
   for (int k = 0; k < lb.count; ++k) wrong += d(k, 0) != T(b[k].second);  // old index of (i, i+1) is i
   CHECK(wrong == 0);
+}
+
+// The README's host loop: a history built from the contact list's keys keeps its rows through a
+// remap with the identical list (the keyless form used to come back all zero, silently).
+TEMPLATE_LIST_TEST_CASE("a keyed history survives a remap with the same list, a keyless one is refused",
+                        "[remap]", test::Backends) {
+  using D = TestType;
+  using T = double;
+  Particles<T, D> p(3);
+  Kokkos::parallel_for(Kokkos::RangePolicy<typename D::execution_space>(0, 3), KOKKOS_LAMBDA(int i) {
+    p.gid(i) = 10 + i;
+  });
+  auto list = make_list<D>({{0, 1}, {1, 2}});
+  ContactHistory<T, D> keyed(pair_contact_keys(p, list), 3);
+  REQUIRE(keyed.has_keys());
+  Kokkos::deep_copy(keyed.data, 7.0);
+  auto same = remap_history(keyed, pair_contact_keys(p, list), 3);
+  auto d = test::to_host(same.data);
+  for (int k = 0; k < 2; ++k)
+    for (int f = 0; f < 3; ++f) CHECK(d(k, f) == 7.0);
+
+  ContactHistory<T, D> keyless(list.count, 3);
+  CHECK_FALSE(keyless.has_keys());
+  CHECK_THROWS_AS(remap_history(keyless, pair_contact_keys(p, list), 3), ParameterError);
+  CHECK_THROWS_WITH(remap_history(keyless, pair_contact_keys(p, list), 3), Catch::Contains("no keys"));
+  // Rows of another model's width are refused too, not zeroed.
+  CHECK_THROWS_WITH(remap_history(keyed, pair_contact_keys(p, list), 4), Catch::Contains("fields = 4"));
+  // An empty keyless history (the first build) is fine: every contact is new.
+  ContactHistory<T, D> empty;
+  CHECK(remap_history(empty, pair_contact_keys(p, list), 3).rows() == 2);
 }

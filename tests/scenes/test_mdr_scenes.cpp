@@ -50,7 +50,7 @@ Table read_table(const fs::path& path) {
   std::vector<std::string> names;
   std::stringstream hs(line);
   std::string c;
-  while (std::getline(hs, c, ',')) names.push_back(c);
+  while (std::getline(hs, c, ',')) names.push_back(driver::csv_column_name(c));  // without the unit
   Table t;
   while (std::getline(in, line)) {
     std::stringstream s(line);

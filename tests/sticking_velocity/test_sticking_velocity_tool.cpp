@@ -23,7 +23,7 @@ ImpactScene scene_R245() { return make_impact_scene(driver::parse_scene_file(kSc
 
 std::string csv(const std::string& name, const std::string& rows) {
   const std::string path = kTmp + "/" + name;
-  std::ofstream(path) << "step,time,ke_translational,force_wall\n" << rows;
+  std::ofstream(path) << "step,time [s],ke_translational [J],force_wall [N]\n" << rows;  // as the driver writes it
   return path;
 }
 

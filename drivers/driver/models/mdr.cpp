@@ -63,9 +63,9 @@ struct MdrFactory : ModelFactoryBase<Mdr<T, Effects<Bits>, Device>> {
   // law), while pi a^2 shrinks to 0 where the force does.
   static constexpr int contact_extra_count = 12;
   static std::vector<std::string> contact_extra_names() {
-    return {"mdr_force",       "area",        "mean_pressure", "delta_max",     "yielded_sides",
-            "adhesive_radius", "side0_force", "side1_force",   "side0_overlap", "side1_overlap",
-            "contact_radius",  "area_from_radius"};
+    return {"mdr_force [N]",       "area [m^2]",        "mean_pressure [Pa]", "delta_max [m]",
+            "yielded_sides",       "adhesive_radius [m]", "side0_force [N]",  "side1_force [N]",
+            "side0_overlap [m]",   "side1_overlap [m]",   "contact_radius [m]", "area_from_radius [m^2]"};
   }
   static KOKKOS_INLINE_FUNCTION void contact_extras(const model_type& m, const ContactGeometry<T>& g,
                                                     const HistoryRow<T, Device>& row, T* out) {

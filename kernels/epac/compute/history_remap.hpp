@@ -2,11 +2,14 @@
 // History remap across contact-list rebuilds (design.md section 4, step 2), on the device:
 // sort the old keys (BinSort, permutation only), binary-search each new contact's key, copy its
 // row. New contacts start from zero; vanished ones are dropped.
+#include <epac/params/validation.hpp>
 #include <epac/state/contact_history.hpp>
 #include <epac/state/contact_list.hpp>
 #include <epac/state/particles.hpp>
 
 #include <Kokkos_Sort.hpp>
+
+#include <string>
 
 namespace epac {
 
@@ -33,16 +36,27 @@ Kokkos::View<std::uint64_t*, Device> wall_contact_keys(const Particles<T, Device
 }
 
 // Returns a history for the contacts with `new_keys`, carrying rows over from `old` by key.
+// Throws ParameterError (host, before any kernel) when `old` has rows but no keys, or rows of
+// another width: either would silently zero every contact's history.
 template <class T, class Device>
 ContactHistory<T, Device> remap_history(const ContactHistory<T, Device>& old,
                                         const Kokkos::View<std::uint64_t*, Device>& new_keys, int fields) {
   using exec = typename Device::execution_space;
+  if (old.rows() > 0 && old.fields > 0) {
+    if (!old.has_keys())
+      throw ParameterError("remap_history: the old history has " + std::to_string(old.rows()) +  // host
+                           " rows but no keys (built as ContactHistory(contacts, fields)); build it as "
+                           "ContactHistory(pair_contact_keys(p, list), fields) so its rows can be matched");
+    if (old.fields != fields)
+      throw ParameterError("remap_history: fields = " + std::to_string(fields) +  // host
+                           " differs from the old history's " + std::to_string(old.fields) +
+                           " (valid: the same model's history_size)");
+  }
   const int n_new = static_cast<int>(new_keys.extent(0));
-  ContactHistory<T, Device> fresh(n_new, fields, "history");
+  ContactHistory<T, Device> fresh(new_keys, fields, "history");
   if (fields == 0) return fresh;
-  Kokkos::deep_copy(fresh.keys, new_keys);
-  const int n_old = static_cast<int>(old.keys.extent(0));
-  if (n_old == 0 || old.fields != fields || n_new == 0) return fresh;  // all new: zero history
+  const int n_old = old.rows();
+  if (n_old == 0 || n_new == 0) return fresh;  // all new: zero history
 
   // Sorted order of the old keys.
   using key_view = Kokkos::View<std::uint64_t*, Device>;

@@ -7,7 +7,9 @@ namespace epac {
 template <class T>
 struct Vec3 {
   T x{0}, y{0}, z{0};
-  KOKKOS_INLINE_FUNCTION constexpr Vec3() = default;
+  // No KOKKOS_INLINE_FUNCTION: a defaulted constructor is host and device already, and nvcc
+  // ignores (and warns, diagnostic 20012) an execution-space annotation on it.
+  constexpr Vec3() = default;
   KOKKOS_INLINE_FUNCTION constexpr Vec3(T a, T b, T c) : x(a), y(b), z(c) {}
   KOKKOS_INLINE_FUNCTION T& operator[](int k) { return k == 0 ? x : (k == 1 ? y : z); }
   KOKKOS_INLINE_FUNCTION T operator[](int k) const { return k == 0 ? x : (k == 1 ? y : z); }

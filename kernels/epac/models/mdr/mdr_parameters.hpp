@@ -110,7 +110,7 @@ struct MdrPairConstants {
 
 
 // delta_Y / R for a side with plane strain modulus E_eff and yield stress Y: the root of the
-// yield equation, solved by bracketed_newton in s = sqrt(delta_Y / R). Depends on E_eff/Y only.
+// yield equation, solved by bracketed_newton_host in s = sqrt(delta_Y / R). Depends on E_eff/Y only.
 // Returns +inf when the side never yields (Y infinite, or the elastic pressure never reaches p_Y
 // before the ellipse is fully submerged, which needs E_eff/Y below about 2).
 inline double mdr_yield_ratio(double E_eff, double Y, MdrYieldOnset onset) {
@@ -129,7 +129,7 @@ inline double mdr_yield_ratio(double E_eff, double Y, MdrYieldOnset onset) {
       fv = 4.0 * r / (3.0 * pi) * s - hardening(s);
       df = 4.0 * r / (3.0 * pi) - dhardening(s);
     };
-    res = bracketed_newton<double>(f, 3.0 * pi / (4.0 * r), 2.75 * 3.0 * pi / (4.0 * r), 1e-15, 200);
+    res = bracketed_newton_host<double>(f, 3.0 * pi / (4.0 * r), 2.75 * 3.0 * pi / (4.0 * r), 1e-15, 200);
   } else {
     // Mean pressure of the ellipse law over Y: F_el / (pi x R^2 Y) with F_el = E A B/4 * bracket,
     // A = 4R, B = 2R: (2 r / pi) bracket(theta) / s^2, theta = 2 asin(s/2). It is increasing in s
@@ -147,7 +147,7 @@ inline double mdr_yield_ratio(double E_eff, double Y, MdrYieldOnset onset) {
     f(hi, fh, d);
     if (fh < 0.0) return inf;  // never reaches the hardening curve (E_eff/Y below about 2)
     f(lo, fl, d);
-    res = bracketed_newton<double>(f, lo, hi, 1e-15, 200);
+    res = bracketed_newton_host<double>(f, lo, hi, 1e-15, 200);
   }
   if (!res.bracketed) return inf;
   return res.x * res.x;

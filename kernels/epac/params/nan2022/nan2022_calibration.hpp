@@ -4,9 +4,9 @@
 // k_p from the peaks (Nan (51)); then k_el, alpha_y, alpha_0 and k_el/k_cl (Table 3) from the
 // curve with the largest alpha_max as (k_e0, alpha_max0), by Nan (29) with (45) (or (49)).
 //
-// A command-line tool needs: read_force_overlap_csv(path) -> nan2022_calibrate(curves, input)
+// A command-line tool needs: curves (drivers/calibrate reads them from CSV) -> nan2022_calibrate(curves, input)
 // -> print Nan2022Calibration (and pass k_el, k_p as Nan2022Options::k_el / k_p, k_el_from = fixed).
-#include <epac/params/nan2022/force_overlap_csv.hpp>
+#include <epac/params/nan2022/force_overlap_curve.hpp>
 #include <epac/params/nan2022/nan2022_parameters.hpp>
 
 #include <Eigen/Dense>

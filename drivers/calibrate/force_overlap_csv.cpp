@@ -1,28 +1,17 @@
-#pragma once
-// Reads measured force-overlap curves from CSV (host only). Layouts:
-//   overlap,force                         one curve
-//   overlap_1,force_1,overlap_2,force_2   one curve per column pair; shorter curves leave cells empty
-// Separators: comma, semicolon, tab or spaces. Lines starting with '#' are comments; a first line
-// that is not numeric is a header. Units are whatever the caller uses consistently (SI: m, N).
+#include "calibrate/force_overlap_csv.hpp"
+
 #include <epac/params/validation.hpp>
 
 #include <cstdlib>
 #include <fstream>
-#include <istream>
 #include <sstream>
-#include <string>
-#include <vector>
 
 namespace epac {
+namespace calibrate {
 
-struct ForceOverlapCurve {
-  std::vector<double> overlap;  // host
-  std::vector<double> force;    // host
-};
-
-namespace csv_detail {
+namespace {
 // Splits a line into cells; an empty cell between separators is kept (as "").
-inline std::vector<std::string> split_cells(const std::string& line) {  // host
+std::vector<std::string> split_cells(const std::string& line) {  // host
   std::vector<std::string> cells;  // host
   std::string cur;  // host
   bool any = false;
@@ -40,15 +29,15 @@ inline std::vector<std::string> split_cells(const std::string& line) {  // host
   if (!cur.empty() || (any && has_delim)) cells.push_back(cur);
   return cells;
 }
-inline bool parse_number(const std::string& s, double& v) {  // host
+bool parse_number(const std::string& s, double& v) {  // host
   if (s.empty()) return false;
   char* end = nullptr;
   v = std::strtod(s.c_str(), &end);
   return end != s.c_str() && *end == '\0';
 }
-}  // namespace csv_detail
+}  // namespace
 
-inline std::vector<ForceOverlapCurve> parse_force_overlap_csv(std::istream& in, const std::string& source = "csv") {  // host
+std::vector<ForceOverlapCurve> parse_force_overlap_csv(std::istream& in, const std::string& source) {  // host
   std::vector<ForceOverlapCurve> curves;  // host
   std::string line;  // host
   int lineno = 0;
@@ -57,12 +46,12 @@ inline std::vector<ForceOverlapCurve> parse_force_overlap_csv(std::istream& in, 
     ++lineno;
     const auto p = line.find_first_not_of(" \t\r");
     if (p == std::string::npos || line[p] == '#') continue;  // host
-    const auto cells = csv_detail::split_cells(line);
+    const auto cells = split_cells(line);
     std::vector<double> vals(cells.size());  // host
     std::vector<bool> present(cells.size());  // host
     bool numeric = true;
     for (std::size_t k = 0; k < cells.size(); ++k) {
-      present[k] = csv_detail::parse_number(cells[k], vals[k]);
+      present[k] = parse_number(cells[k], vals[k]);
       if (!present[k] && !cells[k].empty()) numeric = false;
     }
     if (!numeric) {
@@ -88,10 +77,11 @@ inline std::vector<ForceOverlapCurve> parse_force_overlap_csv(std::istream& in, 
   return curves;
 }
 
-inline std::vector<ForceOverlapCurve> read_force_overlap_csv(const std::string& path) {  // host
+std::vector<ForceOverlapCurve> read_force_overlap_csv(const std::string& path) {  // host
   std::ifstream f(path);
   if (!f) throw ParameterError("cannot open force-overlap file '" + path + "'");  // host
   return parse_force_overlap_csv(f, path);
 }
 
+}  // namespace calibrate
 }  // namespace epac
