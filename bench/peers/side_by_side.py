@@ -32,6 +32,13 @@ from fcc_scene import ROOT, fcc_scene  # noqa: E402
 PEERS = os.path.normpath(os.path.join(ROOT, "..", "shared", "peers", "lammps"))
 LMP_DEFAULT = os.path.expanduser("~/.cache/lammps-peer/build/lmp")
 
+def law_block(model, extra_material="", extra_model=""):
+    """The scene's material (E 1e9 Pa, nu 0.3, density 1000, restitution 0.5, friction 0.5, as
+    LAMMPS's pair files) with a law's extra keys, and its [model] table."""
+    return ("\n[materials.bead]\nyoungs_modulus = 1.0e9\npoisson_ratio = 0.3\ndensity = 1000.0\n"
+            "restitution = 0.5\nfriction = 0.5\n" + extra_material + f"\n[model]\nname = \"{model}\"\n" + extra_model)
+
+
 # law -> (LAMMPS pair files with their thread mode, epac materials + model block)
 #   thread mode "omp": OPENMP style (-sf omp -pk omp N); "serial": no threaded style exists, so
 #   LAMMPS runs it on one thread whatever N is (reported in the N column all the same).
@@ -40,84 +47,28 @@ LAWS = {
         "title": "Hertz-Mindlin (friction, damping)",
         "lammps": [("hhist_omp", "omp", "gran/hertz/history/omp"),
                    ("hm_mindlin", "serial", "granular hertz/material + mindlin")],
-        "epac": """
-[materials.bead]
-youngs_modulus = 1.0e9
-poisson_ratio = 0.3
-density = 1000.0
-restitution = 0.5
-friction = 0.5
-
-[model]
-name = "hertz_mindlin"
-""",
+        "epac": law_block("hertz_mindlin"),
     },
     "jkr": {
         "title": "JKR + Mindlin (surface energy 1 J/m^2)",
         "lammps": [("jkr_mindlin", "serial", "granular jkr + mindlin")],
-        "epac": """
-[materials.bead]
-youngs_modulus = 1.0e9
-poisson_ratio = 0.3
-density = 1000.0
-restitution = 0.5
-friction = 0.5
-surface_energy = 1.0
-
-[model]
-name = "jkr"
-""",
+        "epac": law_block("jkr", "surface_energy = 1.0\n"),
     },
     "nan": {
         "title": "Nan 2022 (adhesion 1 J/m^2, yield 5 MPa)",
         "lammps": [],
-        "epac": """
-[materials.bead]
-youngs_modulus = 1.0e9
-poisson_ratio = 0.3
-density = 1000.0
-restitution = 0.5
-friction = 0.5
-surface_energy = 1.0
-yield_stress = 5.0e6
-
-[model]
-name = "nan2022"
-""",
+        "epac": law_block("nan2022", "surface_energy = 1.0\nyield_stress = 5.0e6\n"),
     },
     "mdr": {
         "title": "MDR, plasticity, no adhesion, no growth (Y 5 MPa)",
         "lammps": [("mdr", "serial", "granular mdr")],
-        "epac": """
-[materials.bead]
-youngs_modulus = 1.0e9
-poisson_ratio = 0.3
-density = 1000.0
-restitution = 0.5
-friction = 0.5
-yield_stress = 5.0e6
-
-[model]
-name = "mdr"
-effects = ["plasticity", "friction", "damping"]
-""",
+        "epac": law_block("mdr", "yield_stress = 5.0e6\n", 'effects = ["plasticity", "friction", "damping"]\n'),
     },
     "mdr_growth": {
         "title": "MDR, plasticity + radius growth (Y 5 MPa)",
         "lammps": [("mdr", "serial", "granular mdr")],
-        "epac": """
-[materials.bead]
-youngs_modulus = 1.0e9
-poisson_ratio = 0.3
-density = 1000.0
-restitution = 0.5
-friction = 0.5
-yield_stress = 5.0e6
-
-[model]
-name = "mdr"
-effects = ["plasticity", "radius_growth", "friction", "damping"]
-""",
+        "epac": law_block("mdr", "yield_stress = 5.0e6\n",
+                          'effects = ["plasticity", "radius_growth", "friction", "damping"]\n'),
     },
 }
 
