@@ -25,7 +25,7 @@ struct ContactOutputs {
 };
 
 // Deterministic mode (design.md section 6): when `force` is allocated, the kernel stores each
-// contact's force on i and the torques on i and j here instead of adding them atomically;
+// contact's force on i and the torques on i and j here instead of adding them to the sums;
 // compute/deterministic_reduce.hpp then sums them per particle in a fixed order.
 template <class T, class Device>
 struct ContactForceBuffer {
