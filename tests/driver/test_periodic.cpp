@@ -455,7 +455,7 @@ TEST_CASE("bad [box], [box.deform] and [particles.lattice] values are rejected",
   CHECK_NOTHROW(parse_scene_string(kBead + box_ok + "\n[particles]\n" + lat_ok + "\n[run]\ndt = 1e-6\nsteps = 1\n"));
 }
 
-TEST_CASE("--phase-times fills summary phases; particle_steps_per_second is reported", "[driver][summary]") {
+TEST_CASE("summary holds the phase times of --phase-times and particle_steps_per_second", "[driver][summary]") {
   const std::string text = kBead + R"(
 [[particles.list]]
 position = [0.0, 0.0, 0.0]
