@@ -155,7 +155,7 @@ struct ParticleSum {
     scatter.block = scatter.stride * (comps - 1) + t.extent(0);
     scatter.ncopies = mode == 1 ? static_cast<int>(scatter.token.size()) : 0;
     if (mode == 1)
-      scatter.copies = Kokkos::View<value_type*, Device>(std::string("epac::sums.") + t.label(),
+      scatter.copies = Kokkos::View<value_type*, Device>(std::string("epac::sums.") + t.label(),  // host
                                                          scatter.block * static_cast<std::size_t>(scatter.ncopies));
   }
 

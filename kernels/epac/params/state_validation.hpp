@@ -22,10 +22,10 @@ namespace epac {
 namespace state_detail {
 
 [[noreturn]] inline void fail(const std::string& what, int index, const std::string& value,  // host
-                              const std::string& range) {
+                              const std::string& range) {  // host
   std::ostringstream s;
   s << what << "[" << index << "] = " << value << " is outside the valid range " << range;
-  throw ParameterError(s.str());
+  throw ParameterError(s.str());  // host
 }
 template <class V>
 std::string str(V v) {  // host
@@ -60,7 +60,7 @@ void check_finite(const std::string& what, int index, T v) {  // host
 template <class T, class Device>
 void validate(const Particles<T, Device>& p, int nmat) {  // host
   using namespace state_detail;
-  if (nmat < 1) throw ParameterError("validate: the model has " + str(nmat) + " materials (valid: >= 1)");
+  if (nmat < 1) throw ParameterError("validate: the model has " + str(nmat) + " materials (valid: >= 1)");  // host
   const auto mat = host_copy(p.material);
   const auto r = host_copy(p.radius), r0 = host_copy(p.radius0);
   const auto m = host_copy(p.mass), inertia = host_copy(p.inertia);
@@ -79,7 +79,7 @@ void validate(const Particles<T, Device>& p, int nmat) {  // host
     }
     if (gid(i) < 0 || gid(i) > std::int64_t(0xffffffffLL)) fail("particles.gid", i, str(gid(i)), "[0, 4294967295]");
   }
-  std::vector<std::pair<std::int64_t, int>> ids(static_cast<std::size_t>(p.n));
+  std::vector<std::pair<std::int64_t, int>> ids(static_cast<std::size_t>(p.n));  // host
   for (int i = 0; i < p.n; ++i) ids[static_cast<std::size_t>(i)] = {gid(i), i};
   std::sort(ids.begin(), ids.end());
   for (std::size_t k = 1; k < ids.size(); ++k)
