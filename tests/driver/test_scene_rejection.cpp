@@ -108,9 +108,9 @@ std::vector<BadCase> bad_cases() {
       // Values inside the old (0, inf) / finite checks that ran into "the simulation diverged":
       // refused with the physical range, its unit and the line.
       {"radius 1e-300", base_scene("", "position = [0.003, 0, 0.002]\nradius = 1e-300"),
-       {"particles.list[1].radius = 1e-300", "[1e-07, 100]", "(m;", "[line 19]"}},
+       {"particles.list[1].radius = 1e-300", "[1e-07, 100]", "(m;", "[line 17]"}},
       {"radius 1e300", base_scene("", "position = [0.003, 0, 0.002]\nradius = 1e300"),
-       {"particles.list[1].radius = 1e+300", "[1e-07, 100]", "[line 19]"}},
+       {"particles.list[1].radius = 1e+300", "[1e-07, 100]", "[line 17]"}},
       {"density 1e-300", base_scene(glass_with("density", "density = 1e-300"), kSecond),
        {"materials.glass.density = 1e-300", "[0.1, 100000]", "kg/m^3", "[line 5]"}},
       {"density 1e300", base_scene(glass_with("density", "density = 1e300"), kSecond),
