@@ -25,7 +25,8 @@ case "$cmd" in
     cmake --build "$build" -j "$jobs" --target epac-run
     scene="$root/drivers/scenes/settling.toml"
     if [ $# -gt 0 ] && [[ "$1" != -* ]]; then scene="$1"; shift; fi
-    exec "$build/drivers/epac-run" "$scene" --threads "$threads" "$@"
+    # --overwrite: each `run` replaces the previous one's outputs (epac-run refuses a used folder)
+    exec "$build/drivers/epac-run" "$scene" --threads "$threads" --overwrite "$@"
     ;;
   test)
     cmake --build "$build" -j "$jobs"

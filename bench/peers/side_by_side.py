@@ -22,6 +22,7 @@ import csv
 import json
 import os
 import re
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -120,7 +121,7 @@ def epac_hold(exe, law, threads, precision, ncell, workdir, tag, deform_steps=50
     out = os.path.join(workdir, f"epac.{law}.{precision}.{threads}t.{tag}")
     env = dict(os.environ, OMP_NUM_THREADS=str(threads), OMP_PROC_BIND=os.environ.get("OMP_PROC_BIND", "false"))
     subprocess.check_call([exe, scene, "--threads", str(threads), "--precision", precision, "--quiet",
-                           "--out", out, "--time-after", str(deform_steps)], env=env)
+                           "--out", out, "--overwrite", "--time-after", str(deform_steps)], env=env)
     s = json.load(open(os.path.join(out, "summary.json")))
     t = s["timed"]
     return {"loop_s": t["wall_s"], "steps": t["steps"], "contacts": t["active_contacts_mean"],
@@ -140,6 +141,7 @@ def legacy_hold(exe, law, threads, workdir, tag):
     t = {}
     for steps in (500, 700):
         out = os.path.join(workdir, f"legacy.{law}.{threads}t.{steps}.{tag}")
+        shutil.rmtree(out, ignore_errors=True)  # a fresh folder: old builds have no --overwrite
         subprocess.check_call([exe, scene, "--threads", str(threads), "--quiet", "--steps", str(steps), "--out", out],
                               env=env)
         t[steps] = json.load(open(os.path.join(out, "summary.json")))["wall_time_s"]

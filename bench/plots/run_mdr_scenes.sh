@@ -24,7 +24,7 @@ for scene in "$SCENES"/mdr_*.toml; do
   fi
   echo "== $stem"
   # shellcheck disable=SC2086
-  if ! "$EXE" "$scene" --out "$OUT/$stem" --threads "$threads" $extra > "$OUT/$stem.log" 2>&1; then
+  if ! "$EXE" "$scene" --out "$OUT/$stem" --overwrite --threads "$threads" $extra > "$OUT/$stem.log" 2>&1; then
     cat "$OUT/$stem.log" >&2
     echo "run_mdr_scenes.sh: $stem failed" >&2
     exit 1

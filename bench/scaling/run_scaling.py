@@ -40,7 +40,9 @@ def run_once(exe, scene_text, threads, workdir, tag):
         f.write(scene_text)
     out = os.path.join(workdir, tag)
     env = dict(os.environ, OMP_NUM_THREADS=str(threads), OMP_PROC_BIND=os.environ.get("OMP_PROC_BIND", "false"))
-    subprocess.check_call([exe, scene, "--threads", str(threads), "--quiet", "--phase-times", "--out", out], env=env)
+    # --overwrite: a rerun with the same --work replaces its outputs (epac-run refuses a used folder)
+    subprocess.check_call([exe, scene, "--threads", str(threads), "--quiet", "--phase-times", "--out", out, "--overwrite"],
+                          env=env)
     s = json.load(open(os.path.join(out, "summary.json")))
     return {
         "wall_s": s["wall_time_s"],

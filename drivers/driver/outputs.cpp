@@ -18,10 +18,85 @@ void make_output_dir(const std::string& dir) {
     throw std::runtime_error("cannot create the output folder '" + dir + "': " + ec.message());
 }
 
+namespace {
+
+const char* const kOutputNames[] = {"timeseries.csv", "summary.json", "contacts.csv", "particles.csv", "particles.pvd"};
+
+bool ends_with(const std::string& s, const std::string& tail) {
+  return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
+}
+
+// snapshots/particles_<step>.vtp, finished or not.
+bool is_snapshot_name(const std::string& name) {
+  std::string n = name;
+  if (ends_with(n, kPartialSuffix)) n.resize(n.size() - std::string(kPartialSuffix).size());
+  return n.compare(0, 10, "particles_") == 0 && ends_with(n, ".vtp");
+}
+
+}  // namespace
+
+std::vector<std::string> outputs_in(const std::string& dir) {
+  namespace fs = std::filesystem;
+  std::vector<std::string> found;
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) return found;
+  for (const char* name : kOutputNames)
+    for (const std::string& f : {std::string(name), std::string(name) + kPartialSuffix})
+      if (fs::exists(fs::path(dir) / f, ec)) found.push_back((fs::path(dir) / f).string());
+  const fs::path snaps = fs::path(dir) / "snapshots";
+  if (fs::is_directory(snaps, ec))
+    for (const auto& e : fs::directory_iterator(snaps, ec))
+      if (is_snapshot_name(e.path().filename().string())) found.push_back(e.path().string());
+  return found;
+}
+
+void prepare_output_dir(const std::string& dir, bool overwrite) {
+  namespace fs = std::filesystem;
+  const std::vector<std::string> old = outputs_in(dir);
+  if (!old.empty() && !overwrite) {
+    std::string names;
+    for (std::size_t k = 0; k < old.size() && k < 4; ++k)
+      names += (k ? ", " : "") + fs::path(old[k]).lexically_relative(dir).string();
+    if (old.size() > 4) names += ", ... (" + std::to_string(old.size()) + " files)";
+    throw OutputFolderInUse("--out = '" + dir + "' holds outputs of another run (" + names +
+                            "); give another --out folder, or --overwrite to remove those outputs first");
+  }
+  for (const auto& f : old) {
+    std::error_code ec;
+    fs::remove(f, ec);
+    if (ec) throw std::runtime_error("cannot remove the old output '" + f + "': " + ec.message());
+  }
+  std::error_code ec;
+  const fs::path snaps = fs::path(dir) / "snapshots";
+  if (fs::is_directory(snaps, ec) && fs::is_empty(snaps, ec)) fs::remove(snaps, ec);  // only if now empty
+  make_output_dir(dir);
+}
+
+StagedFile::StagedFile(const std::string& path) : path_(path), out_(path + kPartialSuffix) {
+  if (!out_) throw std::runtime_error("cannot write '" + path + kPartialSuffix + "'");
+}
+
+void StagedFile::commit() {
+  if (committed_) return;
+  out_.flush();
+  const bool ok = static_cast<bool>(out_);
+  out_.close();
+  if (!ok) throw std::runtime_error("cannot write '" + path_ + kPartialSuffix + "'");
+  std::error_code ec;
+  std::filesystem::rename(path_ + kPartialSuffix, path_, ec);
+  if (ec) throw std::runtime_error("cannot rename '" + path_ + kPartialSuffix + "' to '" + path_ + "': " + ec.message());
+  committed_ = true;
+}
+
+void write_file_atomic(const std::string& path, const std::string& text) {
+  StagedFile f(path);
+  f.stream() << text;
+  f.commit();
+}
+
 TimeseriesWriter::TimeseriesWriter(const std::string& path, const std::vector<std::string>& walls, bool driven,
                                    bool box)
-    : out_(path), driven_(driven), box_(box) {
-  if (!out_) throw std::runtime_error("cannot write '" + path + "'");
+    : file_(path), out_(file_.stream()), driven_(driven), box_(box) {
   // Units in the headers (csv_columns.hpp): SI; counts have none.
   out_ << "step,time [s],ke_translational [J],ke_rotational [J],pe_gravity [J],pair_contacts,wall_contacts,"
           "pair_list,wall_list,max_overlap_ratio [-]";
@@ -43,8 +118,7 @@ void TimeseriesWriter::write(const Sample& s) {
 
 ContactsWriter::ContactsWriter(const std::string& path, const std::vector<std::string>& extra_names,
                                const std::vector<std::string>& wall_names)
-    : out_(path), walls_(wall_names) {
-  if (!out_) throw std::runtime_error("cannot write '" + path + "'");
+    : file_(path), out_(file_.stream()), walls_(wall_names) {
   out_ << "step,time [s],i,j,wall,wall_name,overlap [m],force [N]";
   for (const auto& n : extra_names) out_ << ',' << n;
   out_ << '\n' << std::setprecision(10);
@@ -60,8 +134,7 @@ void ContactsWriter::write(std::int64_t step, double time, const ContactRows& r)
   }
 }
 
-ParticlesWriter::ParticlesWriter(const std::string& path) : out_(path) {
-  if (!out_) throw std::runtime_error("cannot write '" + path + "'");
+ParticlesWriter::ParticlesWriter(const std::string& path) : file_(path), out_(file_.stream()) {
   out_ << "step,time [s],id,x [m],y [m],z [m],R [m],R0 [m],volume [m^3]\n" << std::setprecision(10);
 }
 
@@ -76,6 +149,9 @@ void ParticlesWriter::write(std::int64_t step, double time, const std::vector<do
 
 void write_summary_json(const std::string& path, const RunSummary& s) {
   nlohmann::json j;
+  j["status"] = s.status;  // completed | diverged | interrupted
+  if (s.status != "completed") j["status_reason"] = s.status_reason;
+  j["steps_completed"] = s.steps_completed;
   j["scene"] = s.scene;
   j["particles"] = s.particles;
   j["walls"] = s.walls;
@@ -118,9 +194,7 @@ void write_summary_json(const std::string& path, const RunSummary& s) {
     for (const auto& kv : s.model_counters) c[kv.first] = kv.second;
     j["model_counters"] = c;
   }
-  std::ofstream out(path);
-  if (!out) throw std::runtime_error("cannot write '" + path + "'");
-  out << j.dump(2) << '\n';
+  write_file_atomic(path, j.dump(2) + "\n");
 }
 
 ProgressLine::ProgressLine(bool enabled, std::int64_t total)

@@ -1,12 +1,20 @@
 #pragma once
 // What the command line adds to a scene, and what a run reports (summary.json).
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace epac {
 namespace driver {
+
+// The divergence watch stopped the run (diagnostics.hpp); the outputs, summary.json with status
+// "diverged" included, are whole when it is thrown. epac-run exits 3.
+class DivergedError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
 
 struct RunOptions {
   std::string out_dir = "epac-out";
@@ -16,9 +24,16 @@ struct RunOptions {
   bool progress = false;             // the \r progress line (main sets it when stdout is a terminal)
   bool phase_times = false;          // --phase-times: seconds per loop phase in summary.json "phases"
   std::int64_t time_after = -1;      // --time-after N: also time steps N+1.. alone (summary.json "timed")
+  bool overwrite = false;            // --overwrite: replace the epac outputs of an earlier run in out_dir
 };
 
 struct RunSummary {
+  // "completed", "diverged" (the divergence watch stopped it; status_reason says which particle,
+  // quantity, value and bound) or "interrupted" (SIGINT/SIGTERM; stop_signal is the signal).
+  std::string status = "completed";
+  std::string status_reason;
+  int stop_signal = 0;
+  std::int64_t steps_completed = 0;   // steps whose outputs were written (== steps when completed)
   std::string scene, model, effects, scalar, backend;
   int threads = 0;
   std::int64_t particles = 0, walls = 0, steps = 0, rebuilds = 0;

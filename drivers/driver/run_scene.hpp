@@ -15,6 +15,7 @@
 #include "driver/snapshot_capture.hpp"
 #include "driver/snapshot_writer.hpp"
 #include "driver/spatial_sort.hpp"
+#include "driver/stop_signal.hpp"
 
 #include <epac/compute/contact_forces.hpp>
 #include <epac/compute/particle_sums.hpp>
@@ -25,6 +26,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <memory>
 #include <type_traits>
@@ -240,7 +242,7 @@ RunSummary run_scene(const Scene& scene, const RunOptions& opt) {
   sum.history_fields = F::pair_history_fields;
   sum.bytes_per_contact = bytes_per_contact(F::pair_history_fields, sizeof(T));
 
-  make_output_dir(opt.out_dir);
+  prepare_output_dir(opt.out_dir, opt.overwrite);  // refuses another run's outputs (or removes them)
   sum.timeseries_path = opt.out_dir + "/timeseries.csv";
   sum.summary_path = opt.out_dir + "/summary.json";
 
@@ -260,6 +262,16 @@ RunSummary run_scene(const Scene& scene, const RunOptions& opt) {
                 scene.run.skin, static_cast<long long>(scene.run.output_interval));
     std::fflush(stdout);
   }
+  // dt / T_R matters for Hertz-type laws acting on integrated particles (not for linear_spring,
+  // whose stiffness is its own, nor for a scene of driven particles only).
+  const bool all_driven = std::all_of(scene.particles.begin(), scene.particles.end(),
+                                      [](const ParticleSpec& q) { return q.driven; });
+  const double dt_ratio =
+      scene.model.name == "linear_spring" || all_driven ? 0.0 : scene.run.dt / rayleigh_time(scene);
+  if (dt_ratio > 1.0)  // a warning, not only information: printed with --quiet too
+    std::fprintf(stderr, "epac-run: warning: run.dt = %g s is %.3g smallest Rayleigh times (explicit DEM needs about "
+                 "0.1-0.3); the divergence watch stops the run if particles start to fly apart\n",
+                 scene.run.dt, dt_ratio);
 
   Kokkos::View<unsigned char*, Device> driven;
   Particles<T, Device> p = make_particles<T, Device>(scene, driven);
@@ -386,9 +398,26 @@ RunSummary run_scene(const Scene& scene, const RunOptions& opt) {
     }
   };
 
+  // Divergence watch (diagnostics.hpp), at step 0, before every rebuild (a non-finite or runaway
+  // particle forces one) and at every output step: sets the status; the loop then stops.
+  auto diverged = [&](std::int64_t step) {
+    const std::string why = divergence_check(p, driven, scene.run.dt, scene);
+    if (why.empty()) return false;
+    sum.status = "diverged";
+    char where[160];
+    std::snprintf(where, sizeof where, "step %lld: ", static_cast<long long>(step));
+    sum.status_reason = where + why;
+    if (dt_ratio > 0.3) {
+      std::snprintf(where, sizeof where, "; run.dt is %.3g smallest Rayleigh times: reduce it", dt_ratio);
+      sum.status_reason += where;
+    }
+    return true;
+  };
+
   // First force pass with dt = 0: forces for the opening half kick; no tangential increment.
   force_pass(T(0), true, 0);
   write_sample(0);
+  diverged(0);
   Kokkos::fence();
   sum.setup_time_s = std::chrono::duration<double>(clock::now() - setup_start).count();
 
@@ -401,7 +430,8 @@ RunSummary run_scene(const Scene& scene, const RunOptions& opt) {
   phases.start();
   bool full_step_velocities = true;  // v is at a whole step (after a closing half kick)
   auto window_start = loop_start;
-  for (std::int64_t step = 1; step <= steps; ++step) {
+  std::int64_t done = 0;  // steps completed (their forces and outputs written)
+  for (std::int64_t step = 1; step <= steps && sum.status == "completed"; ++step) {
     if (step == opt.time_after + 1) {
       Kokkos::fence();
       window_start = clock::now();
@@ -415,6 +445,7 @@ RunSummary run_scene(const Scene& scene, const RunOptions& opt) {
     wall_driver.advance((step - 1) * scene.run.dt, scene.run.dt);
     phases.lap(Phase::integration);
     if (det.needs_rebuild(shift, T(wall_driver.max_shift_since_build()))) {
+      if (diverged(step)) break;  // before the cell list meets a non-finite coordinate
       box.wrap(p);  // then detect() records the wrapped positions as the reference: a wrap is no motion
       det.detect(p, walls, &on_sort);
       wall_driver.mark_build();
@@ -422,13 +453,23 @@ RunSummary run_scene(const Scene& scene, const RunOptions& opt) {
       det.remap(p);
       phases.lap(Phase::remap);
     }
-    const bool output = step % every == 0 || step == steps;
+    // SIGINT/SIGTERM: this step is the last; it writes its sample like the final step.
+    const int signal = stop_signal();
+    const bool output = step % every == 0 || step == steps || signal != 0;
     force_pass(dt, output, step);
     full_step_velocities = output;
     if (output) {
       half_kick(p, driven, g, half_dt);  // closing half kick now: samples need whole-step velocities
       phases.lap(Phase::integration);
       write_sample(step);
+    }
+    done = step;
+    if (output && diverged(step)) break;
+    if (signal != 0) {
+      sum.status = "interrupted";
+      sum.stop_signal = signal;
+      sum.status_reason = std::string(signal == SIGINT ? "SIGINT" : signal == SIGTERM ? "SIGTERM" : "signal") +
+                          " after step " + std::to_string(step);
     }
     list_steps += det.pairs.count + det.walls.count;
     if (opt.time_after >= 0 && step > opt.time_after) window_list_steps += det.pairs.count + det.walls.count;
@@ -438,10 +479,11 @@ RunSummary run_scene(const Scene& scene, const RunOptions& opt) {
   Kokkos::fence();
   const auto loop_end = clock::now();
   sum.wall_time_s = std::chrono::duration<double>(loop_end - loop_start).count();
-  if (opt.time_after >= 0 && opt.time_after < steps) {
+  sum.steps_completed = done;
+  if (opt.time_after >= 0 && opt.time_after < done) {
     sum.timed.enabled = true;
     sum.timed.first_step = opt.time_after + 1;
-    sum.timed.steps = steps - opt.time_after;
+    sum.timed.steps = done - opt.time_after;
     sum.timed.wall_s = std::chrono::duration<double>(loop_end - window_start).count();
     sum.timed.list_contacts_mean = window_list_steps / static_cast<double>(sum.timed.steps);
     sum.timed.active_contacts_mean = window_samples > 0 ? window_active_sum / window_samples : 0.0;
@@ -449,23 +491,31 @@ RunSummary run_scene(const Scene& scene, const RunOptions& opt) {
   progress.finish();
 
   sum.rebuilds = det.builds - builds0;
-  sum.simulated_time = steps * scene.run.dt;
+  sum.simulated_time = done * scene.run.dt;
   sum.contacts_mean = samples > 0 ? active_sum / samples : 0.0;
-  sum.contact_list_mean = steps > 0 ? list_steps / steps : static_cast<double>(det.pairs.count + det.walls.count);
+  sum.contact_list_mean = done > 0 ? list_steps / done : static_cast<double>(det.pairs.count + det.walls.count);
   if (sum.wall_time_s > 0) {
     sum.contact_steps_per_second = list_steps / sum.wall_time_s;
-    sum.active_contact_steps_per_second = sum.contacts_mean * steps / sum.wall_time_s;
-    sum.particle_steps_per_second = static_cast<double>(sum.particles) * static_cast<double>(steps) / sum.wall_time_s;
+    sum.active_contact_steps_per_second = sum.contacts_mean * done / sum.wall_time_s;
+    sum.particle_steps_per_second = static_cast<double>(sum.particles) * static_cast<double>(done) / sum.wall_time_s;
   }
   if (phases.enabled()) sum.phases = phases.results();
   if (scene.box.enabled) sum.box_edge.assign(box.edge().begin(), box.edge().end());
   F::report(model, sum);
+  // Every file gets its final name, whole rows only; summary.json last: its presence says the
+  // folder holds one run's complete outputs, its status whether the run completed.
+  csv.commit();
+  if (contacts_csv) contacts_csv->commit();
+  if (particles_csv) particles_csv->commit();
   write_summary_json(sum.summary_path, sum);
+  if (sum.status == "diverged")
+    throw DivergedError("the simulation diverged at " + sum.status_reason + " (outputs up to step " +
+                        std::to_string(done) + " and summary.json with status \"diverged\" in " + opt.out_dir + ")");
   if (info) {
     for (const auto& kv : sum.model_counters) std::printf("%s = %.10g\n", kv.first.c_str(), kv.second);
     std::printf("%lld steps in %.3f s (setup %.3f s): %.3g contact-steps/s (list entries), %.1f contacts (mean, "
                 "active), %lld rebuilds\n",
-                static_cast<long long>(steps), sum.wall_time_s, sum.setup_time_s, sum.contact_steps_per_second,
+                static_cast<long long>(done), sum.wall_time_s, sum.setup_time_s, sum.contact_steps_per_second,
                 sum.contacts_mean, static_cast<long long>(sum.rebuilds));
     if (phases.enabled()) {
       std::printf("phases [s]:");

@@ -22,6 +22,23 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
+// Physical ranges of scene values. Outside them a run does not fail with a named error but
+// diverges or overflows (a radius of 1e-300 m makes a zero mass, gravity 1e300 an infinite
+// velocity), so they are refused on input. Each is wide against practice; the radius and
+// density bounds also keep the mass and moment of inertia normal numbers in float
+// (0.4 x 4/3 pi x 0.1 kg/m^3 x (1e-7 m)^5 = 1.7e-36 > 1.2e-38).
+struct PhysicalRange {
+  double lo, hi;
+  const char* note;
+};
+constexpr PhysicalRange kRadius{1e-7, 1e2, "m; 0.1 um to 100 m"};
+constexpr PhysicalRange kDensity{0.1, 1e5, "kg/m^3; aerogels are about 1, osmium 22590"};
+constexpr PhysicalRange kYoungsModulus{1e3, 1e13, "Pa; soft gels to above diamond"};
+constexpr PhysicalRange kCoordinate{-1e6, 1e6, "m"};
+constexpr PhysicalRange kSpeed{-1e4, 1e4, "m/s per component"};
+constexpr PhysicalRange kSpin{-1e9, 1e9, "rad/s per component"};
+constexpr PhysicalRange kGravity{-1e5, 1e5, "m/s^2 per component, 1e4 g"};
+
 std::string type_name(const toml::node& n) {
   switch (n.type()) {
     case toml::node_type::table: return "a table";
@@ -71,6 +88,18 @@ class TableReader {
     check(key_path(key), v, lo, lk, hi, hk, allow_inf, *n);
     return v;
   }
+  // A number in a physical range (closed); `def` when absent (required when def is empty).
+  double number(const std::string& key, const PhysicalRange& range, std::optional<double> def) {
+    const toml::node* n = get(key);
+    if (!n) {
+      if (def) return *def;
+      throw SceneError(key_path(key) + " is missing (required; valid range " +
+                       range_text(range.lo, Bound::closed, range.hi, Bound::closed) + " " + range.note + ")");
+    }
+    const double v = as_number(*n, key_path(key));
+    check(key_path(key), v, range, *n);
+    return v;
+  }
   // A number read without a range check (the caller validates it, e.g. Material::validate).
   std::optional<double> raw_number(const std::string& key) {
     const toml::node* n = get(key);
@@ -110,14 +139,14 @@ class TableReader {
     return s->get();
   }
 
-  // Three finite numbers; `def` when absent (required when def is empty).
-  Vec3d vec3(const std::string& key, std::optional<Vec3d> def) {
+  // Three finite numbers, each in `range` when given; `def` when absent (required when def is empty).
+  Vec3d vec3(const std::string& key, std::optional<Vec3d> def, const PhysicalRange* range = nullptr) {
     const toml::node* n = get(key);
     if (!n) {
       if (def) return *def;
       throw SceneError(key_path(key) + " is missing (required; three finite numbers [x, y, z])");
     }
-    return vec3_of(*n, key_path(key));
+    return vec3_of(*n, key_path(key), range);
   }
 
   const toml::table* table(const std::string& key) {
@@ -161,8 +190,15 @@ class TableReader {
       throw SceneError(e.what() + line_of(n));
     }
   }
+  static void check(const std::string& name, double v, const PhysicalRange& r, const toml::node& n) {
+    try {
+      require_range(name, v, r.lo, Bound::closed, r.hi, Bound::closed);
+    } catch (const ParameterError& e) {
+      throw SceneError(e.what() + std::string(" (") + r.note + ")" + line_of(n));
+    }
+  }
 
-  static Vec3d vec3_of(const toml::node& n, const std::string& where) {
+  static Vec3d vec3_of(const toml::node& n, const std::string& where, const PhysicalRange* range = nullptr) {
     auto a = n.as_array();
     if (!a || a->size() != 3)
       throw SceneError(where + " must be an array of three numbers [x, y, z], got " +
@@ -171,7 +207,8 @@ class TableReader {
     for (int d = 0; d < 3; ++d) {
       const std::string w = where + "[" + std::to_string(d) + "]";
       v[d] = as_number(*a->get(d), w);
-      check(w, v[d], -kInf, Bound::open, kInf, Bound::open, false, *a->get(d));
+      if (range) check(w, v[d], *range, *a->get(d));
+      else check(w, v[d], -kInf, Bound::open, kInf, Bound::open, false, *a->get(d));
     }
     return v;
   }
@@ -234,6 +271,12 @@ void parse_materials(TableReader& top, Scene& s) {
       }
       throw SceneError(msg + where);
     }
+    // Physical ranges of what Material::validate only requires positive (a given density of a
+    // rigid material too: rigid particles are moved by it).
+    const toml::table& mt_node = *node.as_table();
+    if (const toml::node* d = mt_node.get("density")) TableReader::check(path + ".density", m.density, kDensity, *d);
+    if (const toml::node* e = mt_node.get("youngs_modulus"); e && !m.rigid)
+      TableReader::check(path + ".youngs_modulus", m.youngs_modulus, kYoungsModulus, *e);
     s.material_index[name] = static_cast<int>(s.materials.size());
     s.materials.push_back(m);
   }
@@ -298,7 +341,7 @@ std::vector<MotionSegment> parse_motion(TableReader& r, const std::string& path,
     TableReader sr(*mn.as_table(), mp);
     MotionSegment seg;
     seg.duration = sr.number("duration", 0.0, Bound::open, kInf, Bound::open, std::nullopt);
-    seg.velocity = sr.vec3("velocity", std::nullopt);
+    seg.velocity = sr.vec3("velocity", std::nullopt, &kSpeed);
     sr.finish();
     out.push_back(seg);
   }
@@ -310,12 +353,12 @@ ParticleSpec parse_particle(const toml::table& t, const std::string& path, const
   TableReader r(t, path);
   ParticleSpec p;
   p.origin = path;
-  p.position = r.vec3("position", std::nullopt);
-  p.radius = r.number("radius", 0.0, Bound::open, kInf, Bound::open, std::nullopt);
+  p.position = r.vec3("position", std::nullopt, &kCoordinate);
+  p.radius = r.number("radius", kRadius, std::nullopt);
   p.material = material_of(r, "material", s);
   const bool has_velocity = r.has("velocity");
-  p.velocity = r.vec3("velocity", Vec3d{0, 0, 0});
-  p.angular_velocity = r.vec3("angular_velocity", Vec3d{0, 0, 0});
+  p.velocity = r.vec3("velocity", Vec3d{0, 0, 0}, &kSpeed);
+  p.angular_velocity = r.vec3("angular_velocity", Vec3d{0, 0, 0}, &kSpin);
   p.driven = r.boolean("driven", false);
   p.motion = parse_motion(r, path, t);
   if (!p.motion.empty()) {
@@ -344,14 +387,14 @@ void parse_particles(TableReader& top, Scene& s) {
     TableReader f(*ft, "particles.fill");
     FillSpec& fill = s.fill;
     fill.enabled = true;
-    fill.box_min = f.vec3("box_min", std::nullopt);
-    fill.box_max = f.vec3("box_max", std::nullopt);
+    fill.box_min = f.vec3("box_min", std::nullopt, &kCoordinate);
+    fill.box_max = f.vec3("box_max", std::nullopt, &kCoordinate);
     fill.count = f.integer("count", 0, 100000000, std::nullopt);
-    fill.radius_min = f.number("radius_min", 0.0, Bound::open, kInf, Bound::open, std::nullopt);
-    fill.radius_max = f.number("radius_max", fill.radius_min, Bound::closed, kInf, Bound::open, fill.radius_min);
+    fill.radius_min = f.number("radius_min", kRadius, std::nullopt);
+    fill.radius_max = f.number("radius_max", fill.radius_min, Bound::closed, kRadius.hi, Bound::closed, fill.radius_min);
     fill.material = material_of(f, "material", s);
     fill.seed = static_cast<std::uint64_t>(f.integer("seed", 0, std::numeric_limits<std::int64_t>::max(), 1));
-    fill.velocity = f.vec3("velocity", Vec3d{0, 0, 0});
+    fill.velocity = f.vec3("velocity", Vec3d{0, 0, 0}, &kSpeed);
     f.finish();
   }
   if (const toml::table* lt = r.table("lattice")) {
@@ -360,7 +403,7 @@ void parse_particles(TableReader& top, Scene& s) {
     lat.enabled = true;
     const std::string type = l.string("type").value_or("fcc");
     if (type != "fcc") throw SceneError("particles.lattice.type = \"" + type + "\" is not valid (valid: \"fcc\")" + line_of(*lt));
-    lat.a = l.number("a", 0.0, Bound::open, kInf, Bound::open, std::nullopt);
+    lat.a = l.number("a", 0.0, Bound::open, kCoordinate.hi, Bound::closed, std::nullopt);
     const toml::array* cells = l.array("cells");
     if (!cells || cells->size() != 3)
       throw SceneError(std::string("particles.lattice.cells ") + (cells ? "must be an array of three integers [nx, ny, nz]"
@@ -377,13 +420,13 @@ void parse_particles(TableReader& top, Scene& s) {
     if (lat.count() > 100000000)
       throw SceneError("particles.lattice.cells gives " + std::to_string(lat.count()) +
                        " particles, outside the valid range [4, 100000000]" + line_of(*lt));
-    lat.origin = l.vec3("origin", s.box.enabled ? s.box.lo : Vec3d{0, 0, 0});
-    lat.radius_min = l.number("radius_min", 0.0, Bound::open, kInf, Bound::open, std::nullopt);
-    lat.radius_max = l.number("radius_max", lat.radius_min, Bound::closed, kInf, Bound::open, lat.radius_min);
+    lat.origin = l.vec3("origin", s.box.enabled ? s.box.lo : Vec3d{0, 0, 0}, &kCoordinate);
+    lat.radius_min = l.number("radius_min", kRadius, std::nullopt);
+    lat.radius_max = l.number("radius_max", lat.radius_min, Bound::closed, kRadius.hi, Bound::closed, lat.radius_min);
     lat.material = material_of(l, "material", s);
     lat.seed = static_cast<std::uint64_t>(l.integer("seed", 0, std::numeric_limits<std::int64_t>::max(), 1));
-    lat.jitter = l.number("jitter", 0.0, Bound::closed, kInf, Bound::open, 0.0);
-    lat.velocity = l.vec3("velocity", Vec3d{0, 0, 0});
+    lat.jitter = l.number("jitter", 0.0, Bound::closed, kCoordinate.hi, Bound::closed, 0.0);
+    lat.velocity = l.vec3("velocity", Vec3d{0, 0, 0}, &kSpeed);
     l.finish();
   }
   r.finish();
@@ -395,8 +438,8 @@ void parse_box(TableReader& top, Scene& s) {
   TableReader r(*bt, "box");
   BoxSpec& b = s.box;
   b.enabled = true;
-  b.lo = r.vec3("lo", std::nullopt);
-  b.hi = r.vec3("hi", std::nullopt);
+  b.lo = r.vec3("lo", std::nullopt, &kCoordinate);
+  b.hi = r.vec3("hi", std::nullopt, &kCoordinate);
   for (int d = 0; d < 3; ++d)
     if (!(b.hi[d] > b.lo[d])) {
       std::ostringstream m;
@@ -449,7 +492,7 @@ void parse_walls(TableReader& top, Scene& s) {
     TableReader r(*n.as_table(), path);
     WallSpec w;
     w.name = r.string("name").value_or("wall" + std::to_string(k));
-    w.point = r.vec3("point", std::nullopt);
+    w.point = r.vec3("point", std::nullopt, &kCoordinate);
     const Vec3d nrm = r.vec3("normal", std::nullopt);
     const double len = std::sqrt(nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2]);
     if (!(len > 0.0) || !std::isfinite(len)) {
@@ -461,7 +504,7 @@ void parse_walls(TableReader& top, Scene& s) {
     for (int d = 0; d < 3; ++d) w.normal[d] = nrm[d] / len;
     w.material = material_of(r, "material", s);
     const bool has_velocity = r.has("velocity");
-    w.velocity = r.vec3("velocity", Vec3d{0, 0, 0});
+    w.velocity = r.vec3("velocity", Vec3d{0, 0, 0}, &kSpeed);
     w.segments = parse_motion(r, path, n);
     if (!w.segments.empty() && has_velocity)
       throw SceneError(path + ": give either velocity or motion, not both" + line_of(n));
@@ -622,7 +665,7 @@ Scene parse_table(const toml::table& root, const std::string& source) {
   parse_box(top, s);  // before the particles: the lattice origin defaults to box.lo
   parse_particles(top, s);
   parse_walls(top, s);
-  s.gravity = top.vec3("gravity", Vec3d{0, 0, 0});
+  s.gravity = top.vec3("gravity", Vec3d{0, 0, 0}, &kGravity);
   parse_run(top, s);
   top.finish();
   finish_scene(s);

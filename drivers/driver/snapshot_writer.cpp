@@ -1,5 +1,7 @@
 #include "driver/snapshot_writer.hpp"
 
+#include "driver/outputs.hpp"
+
 #include <cstdio>
 #include <filesystem>
 #include <iomanip>
@@ -18,13 +20,6 @@ void data_array(std::ostringstream& o, const char* type, const std::string& name
   o << " format=\"ascii\">\n          ";
   for (std::size_t k = 0; k < values.size(); ++k) o << (k ? " " : "") << values[k];
   o << "\n        </DataArray>\n";
-}
-
-void write_file(const std::string& path, const std::string& text) {
-  std::ofstream f(path);
-  if (!f) throw std::runtime_error("cannot write '" + path + "'");
-  f << text;
-  if (!f) throw std::runtime_error("cannot write '" + path + "'");
 }
 
 }  // namespace
@@ -74,7 +69,7 @@ SnapshotWriter::SnapshotWriter(const std::string& out_dir)
 void SnapshotWriter::write(const ParticleSnapshot& s) {
   char name[64];
   std::snprintf(name, sizeof name, "snapshots/particles_%012lld.vtp", static_cast<long long>(s.step));
-  write_file(dir_ + "/" + name, vtp_text(s));
+  write_file_atomic(dir_ + "/" + name, vtp_text(s));  // whole or absent
   series_.emplace_back(s.time, name);
   std::ostringstream o;
   o << std::setprecision(17);
@@ -85,7 +80,7 @@ void SnapshotWriter::write(const ParticleSnapshot& s) {
     o << "    <DataSet timestep=\"" << e.first << "\" group=\"\" part=\"0\" file=\"" << e.second << "\"/>\n";
   o << "  </Collection>\n"
     << "</VTKFile>\n";
-  write_file(pvd_path_, o.str());  // rewritten each time: valid after every snapshot
+  write_file_atomic(pvd_path_, o.str());  // rewritten each time: valid after every snapshot
 }
 
 }  // namespace driver

@@ -2,7 +2,8 @@
 // Particle snapshots for ParaView and OVITO ([run] snapshot_format = "vtp"): one VTK XML PolyData
 // file per output step (snapshots/particles_<step>.vtp: one vertex per particle, ASCII) and a
 // ParaView collection (particles.pvd) that lists them with their times, rewritten after each
-// snapshot so an interrupted run still opens.
+// snapshot so an interrupted run still opens. Each file is written under NAME.partial and
+// renamed when whole (outputs.hpp).
 //
 // Why .vtp + .pvd: ParaView opens a .pvd as a time series with named point arrays (Glyph or
 // Point Gaussian by "radius" draws the spheres); OVITO 3's reader of ParaView VTP particle files

@@ -121,6 +121,7 @@ ImpactRun simulate_impact(const ImpactScene& s, double V, const std::string& out
   q.angular_velocity = {0, 0, 0};
   driver::RunOptions o;
   o.out_dir = out_dir;
+  o.overwrite = true;  // each impact of the search replaces the previous one's outputs
   o.quiet = true;
   o.progress = false;
   o.precision = "double";

@@ -15,10 +15,14 @@
 namespace epac {
 namespace test {
 
+// Removed first: a folder left by an earlier test process with the same pid would hold another
+// run's outputs, which the driver refuses.
 inline std::filesystem::path fresh_out_dir(const std::string& tag) {
   static int counter = 0;
-  return std::filesystem::temp_directory_path() /
-         ("epac-driver-" + std::to_string(getpid()) + "-" + tag + "-" + std::to_string(counter++));
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("epac-driver-" + std::to_string(getpid()) + "-" + tag + "-" + std::to_string(counter++));
+  std::filesystem::remove_all(dir);
+  return dir;
 }
 
 // A CSV with a header line, as columns by name without the unit ("time [s]" -> "time"; numbers only).

@@ -22,8 +22,10 @@ namespace {
 
 fs::path fresh_dir(const std::string& tag) {
   static int counter = 0;
-  return fs::temp_directory_path() / ("epac-driver-run-" + std::to_string(getpid()) + "-" + tag + "-" +
-                                      std::to_string(counter++));
+  const fs::path dir = fs::temp_directory_path() / ("epac-driver-run-" + std::to_string(getpid()) + "-" + tag + "-" +
+                                                     std::to_string(counter++));
+  fs::remove_all(dir);  // a leftover of an earlier process with the same pid would be refused
+  return dir;
 }
 
 // timeseries.csv as columns by name.

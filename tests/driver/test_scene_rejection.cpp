@@ -66,6 +66,12 @@ std::string with_dt(const std::string& dt) {
   return s.replace(s.find("dt = 1e-6"), 9, "dt = " + dt);
 }
 
+std::string with_wall_point(const std::string& point) {
+  std::string s = base_scene("", kSecond);
+  const std::string old = "point = [0, 0, 0]";
+  return s.replace(s.find(old), old.size(), "point = " + point);
+}
+
 struct BadCase {
   const char* what;
   std::string text;
@@ -81,12 +87,12 @@ std::vector<BadCase> bad_cases() {
       {"Poisson ratio above 0.5", base_scene(glass_with("poisson_ratio", "poisson_ratio = 0.7"), kSecond),
        {"materials.glass.poisson_ratio", "= 0.7", "(-1, 0.5)"}},
       {"radius 0", base_scene("", "position = [0.003, 0, 0.002]\nradius = 0.0"),
-       {"particles.list[1].radius", "= 0", "(0, inf)"}},
+       {"particles.list[1].radius", "= 0", "[1e-07, 100]"}},
       {"negative radius", base_scene("", "position = [0.003, 0, 0.002]\nradius = -0.001"),
-       {"particles.list[1].radius", "= -0.001", "(0, inf)"}},
+       {"particles.list[1].radius", "= -0.001", "[1e-07, 100]"}},
       {"NaN density", base_scene(glass_with("density", "density = nan"), kSecond), {"materials.glass.density", "= nan", "(0, inf)"}},
       {"NaN position", base_scene("", "position = [0.003, 0, nan]\nradius = 0.001"),
-       {"particles.list[1].position[2]", "= nan", "(-inf, inf)"}},
+       {"particles.list[1].position[2]", "= nan", "[-1e+06, 1e+06]"}},
       {"NaN skin", base_scene("", kSecond, "skin = nan"), {"run.skin", "= nan", "[0, inf)"}},
       {"NaN time step", with_dt("nan"), {"run.dt", "= nan", "(0, inf)"}},
       {"unknown material key", base_scene(glass_with("densty", "densty = 2500"), kSecond),
@@ -99,13 +105,36 @@ std::vector<BadCase> bad_cases() {
       {"zero wall normal", base_scene("", kSecond, "", "[0, 0, 0]"),
        {"walls[0].normal = [0, 0, 0]", "length 0", "(0, inf)"}},
       {"negative time step", with_dt("-1.0"), {"run.dt", "= -1", "(0, inf)"}},
+      // Values inside the old (0, inf) / finite checks that ran into "the simulation diverged":
+      // refused with the physical range, its unit and the line.
+      {"radius 1e-300", base_scene("", "position = [0.003, 0, 0.002]\nradius = 1e-300"),
+       {"particles.list[1].radius = 1e-300", "[1e-07, 100]", "(m;", "[line 17]"}},
+      {"radius 1e300", base_scene("", "position = [0.003, 0, 0.002]\nradius = 1e300"),
+       {"particles.list[1].radius = 1e+300", "[1e-07, 100]", "[line 17]"}},
+      {"density 1e-300", base_scene(glass_with("density", "density = 1e-300"), kSecond),
+       {"materials.glass.density = 1e-300", "[0.1, 100000]", "kg/m^3", "[line 5]"}},
+      {"density 1e300", base_scene(glass_with("density", "density = 1e300"), kSecond),
+       {"materials.glass.density = 1e+300", "[0.1, 100000]"}},
+      {"Young's modulus 1e300", base_scene(glass_with("youngs_modulus", "youngs_modulus = 1e300"), kSecond),
+       {"materials.glass.youngs_modulus = 1e+300", "[1000, 1e+13]", "Pa", "[line 3]"}},
+      {"gravity 1e300", "gravity = [0, 0, 1e300]\n" + base_scene("", kSecond),
+       {"gravity[2] = 1e+300", "[-100000, 100000]", "m/s^2", "[line 1]"}},
+      {"velocity 1e300", base_scene("", kSecond + "\nvelocity = [1e300, 0, 0]"),
+       {"particles.list[1].velocity[0] = 1e+300", "[-10000, 10000]", "m/s"}},
+      {"angular velocity 1e300", base_scene("", kSecond + "\nangular_velocity = [0, -1e300, 0]"),
+       {"particles.list[1].angular_velocity[1] = -1e+300", "[-1e+09, 1e+09]", "rad/s"}},
+      {"position 1e300", base_scene("", "position = [1e300, 0, 0.002]\nradius = 0.001"),
+       {"particles.list[1].position[0] = 1e+300", "[-1e+06, 1e+06]"}},
+      {"wall point 1e300", with_wall_point("[0, 0, 1e300]"), {"walls[0].point[2] = 1e+300", "[-1e+06, 1e+06]"}},
   };
 }
 
 fs::path fresh_dir(const std::string& tag) {
   static int counter = 0;
-  return fs::temp_directory_path() / ("epac-driver-test-" + std::to_string(getpid()) + "-" + tag + "-" +
-                                      std::to_string(counter++));
+  const fs::path dir = fs::temp_directory_path() / ("epac-driver-test-" + std::to_string(getpid()) + "-" + tag + "-" +
+                                                     std::to_string(counter++));
+  fs::remove_all(dir);  // a leftover of an earlier process with the same pid would be refused
+  return dir;
 }
 
 }  // namespace
