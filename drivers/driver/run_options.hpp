@@ -16,6 +16,7 @@ struct RunOptions {
   bool progress = false;             // the \r progress line (main sets it when stdout is a terminal)
   bool phase_times = false;          // --phase-times: seconds per loop phase in summary.json "phases"
   std::int64_t time_after = -1;      // --time-after N: also time steps N+1.. alone (summary.json "timed")
+  bool deterministic = false;        // --deterministic: as [run] deterministic = true (either turns it on)
 };
 
 struct RunSummary {
