@@ -1,9 +1,11 @@
 # Runs epac-run (EXE) on SCENE twice, with --threads 1 and --threads 2 and the extra arguments
-# ARGS (a ;-list, e.g. --deterministic;--steps;3000), and requires byte-identical output files
-# FILES (a ;-list, e.g. timeseries.csv;particles.csv). summary.json is not compared: it holds
+# ARGS (comma-separated, e.g. --deterministic,--steps,3000), and requires byte-identical output
+# files FILES (comma-separated, e.g. timeseries.csv,particles.csv). summary.json is not compared: it holds
 # timings and the thread count. APPEND (optional): lines appended to a copy of the scene, which
 # then runs instead (settling.toml ends with its [run] table, so they land there).
 cmake_minimum_required(VERSION 3.16)
+string(REPLACE "," ";" ARGS "${ARGS}")
+string(REPLACE "," ";" FILES "${FILES}")
 if(DEFINED APPEND)
   file(READ ${SCENE} text)
   string(REPLACE "|" "\n" lines "${APPEND}")

@@ -24,31 +24,31 @@ using namespace epac;
 namespace {
 
 // Laws: the model template and how it is built from materials.
-struct HM {
+struct HmLaw {
   template <class T, unsigned B, class D>
   using model = HertzMindlin<T, Effects<B>, D>;
   template <class M>
   static M create(const std::vector<Material>& m) { return M::create(m); }
 };
-struct LS {
+struct LsLaw {
   template <class T, unsigned B, class D>
   using model = LinearSpring<T, Effects<B>, D>;
   template <class M>
   static M create(const std::vector<Material>& m) { return M::create(m, 3e4); }  // ~ Hertz stiffness here
 };
-struct JKR {
+struct JkrLaw {
   template <class T, unsigned B, class D>
   using model = Jkr<T, Effects<B>, D>;
   template <class M>
   static M create(const std::vector<Material>& m) { return M::create(m); }
 };
-struct NAN {
+struct NanLaw {
   template <class T, unsigned B, class D>
   using model = Nan2022<T, Effects<B>, D>;
   template <class M>
   static M create(const std::vector<Material>& m) { return M::create(m); }
 };
-struct MDR {
+struct MdrLaw {
   template <class T, unsigned B, class D>
   using model = Mdr<T, Effects<B>, D>;
   template <class M>
@@ -255,11 +255,11 @@ void require_same_bits(const Result<T>& a, const Result<T>& b) {
 }  // namespace
 
 TEMPLATE_TEST_CASE("deterministic mode: same bits for a shuffled, swapped list and on one thread",
-                   "[deterministic]", (Case<HM, kFriction | kDamping>), (Case<HM, 0u>),
-                   (Case<LS, kFriction | kDamping>), (Case<JKR, kAdhesion | kFriction | kDamping>),
-                   (Case<JKR, kAdhesion>), (Case<NAN, kAdhesion | kPlasticity | kFriction | kDamping>),
-                   (Case<NAN, kPlasticity>), (Case<MDR, kAllEffects>), (Case<MDR, kPlasticity | kRadiusGrowth>),
-                   (Case<MDR, kPlasticity | kAdhesion | kRadiusGrowth>), (Case<MDR, kPlasticity | kFriction>)) {
+                   "[deterministic]", (Case<HmLaw, kFriction | kDamping>), (Case<HmLaw, 0u>),
+                   (Case<LsLaw, kFriction | kDamping>), (Case<JkrLaw, kAdhesion | kFriction | kDamping>),
+                   (Case<JkrLaw, kAdhesion>), (Case<NanLaw, kAdhesion | kPlasticity | kFriction | kDamping>),
+                   (Case<NanLaw, kPlasticity>), (Case<MdrLaw, kAllEffects>), (Case<MdrLaw, kPlasticity | kRadiusGrowth>),
+                   (Case<MdrLaw, kPlasticity | kAdhesion | kRadiusGrowth>), (Case<MdrLaw, kPlasticity | kFriction>)) {
   using Law = typename TestType::law;
   constexpr unsigned Bits = TestType::bits;
   using T = double;
@@ -285,7 +285,7 @@ TEMPLATE_TEST_CASE("deterministic mode: same bits for a shuffled, swapped list a
   for (double q : base.x) REQUIRE(std::isfinite(q));
   REQUIRE(fmax > 0);
   if (Bits & kFriction) REQUIRE(tmax > 0);
-  if (std::is_same<Law, MDR>::value && (Bits & kRadiusGrowth)) REQUIRE(growth > 1e-6);  // the radii grew
+  if (std::is_same<Law, MdrLaw>::value && (Bits & kRadiusGrowth)) REQUIRE(growth > 1e-6);  // the radii grew
 
   SECTION("shuffled lists, every pair listed (j, i)") {
     require_same_bits(base, run<Law, Bits, T, DH>(st, po_shuffled, wo_shuffled, true, steps));
