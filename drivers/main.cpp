@@ -76,6 +76,8 @@ int main(int argc, char** argv) {
   app.add_option("--precision", opt.precision, "scalar type: double (default) or float")
       ->check(CLI::IsMember({"double", "float"}));
   app.add_flag("--quiet", opt.quiet, "no informational output and no progress line");
+  app.add_flag("--deterministic", opt.deterministic,
+               "deterministic mode: the same bits for any thread count (as [run] deterministic = true)");
   app.add_flag("--phase-times", opt.phase_times,
                "seconds per loop phase (detection, remap, force, growth, integration, output) in summary.json");
   app.add_option("--time-after", opt.time_after,

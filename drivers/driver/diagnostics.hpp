@@ -2,10 +2,13 @@
 // Device reductions behind one timeseries sample: energies, active contact counts, the largest
 // relative overlap, per-wall normal force, and the contact force on driven particles; and the
 // divergence watch.
+// Sums go through ordered_sum (fixed order: the same bits on any thread count, so a run in the
+// deterministic mode writes the same timeseries.csv on 1 or 2 threads); counts and maxima are exact.
 #include "driver/sample.hpp"
 #include "driver/scene.hpp"
 
 #include <epac/compute/contact_forces.hpp>
+#include <epac/compute/ordered_sum.hpp>
 #include <epac/core/vec3.hpp>
 #include <epac/state/contact_list.hpp>
 #include <epac/state/particles.hpp>
@@ -32,13 +35,12 @@ void sample_state(const Particles<T, Device>& p, const Kokkos::View<unsigned cha
   auto m = p.mass;
   auto I = p.inertia;
   auto R = p.radius;
-  double ke = 0, kr = 0, pe = 0;
-  Kokkos::parallel_reduce("epac::driver::ke_trans", Kokkos::RangePolicy<exec>(0, n),
-      KOKKOS_LAMBDA(int i, double& a) { a += 0.5 * double(m(i)) * double(dot(load3(v, i), load3(v, i))); }, ke);
-  Kokkos::parallel_reduce("epac::driver::ke_rot", Kokkos::RangePolicy<exec>(0, n),
-      KOKKOS_LAMBDA(int i, double& a) { a += 0.5 * double(I(i)) * double(dot(load3(w, i), load3(w, i))); }, kr);
-  Kokkos::parallel_reduce("epac::driver::pe_gravity", Kokkos::RangePolicy<exec>(0, n),
-      KOKKOS_LAMBDA(int i, double& a) { a -= double(m(i)) * double(dot(gravity, load3(x, i))); }, pe);
+  const double ke = ordered_sum<exec>("epac::driver::ke_trans", n,
+      KOKKOS_LAMBDA(int i) { return 0.5 * double(m(i)) * double(dot(load3(v, i), load3(v, i))); });
+  const double kr = ordered_sum<exec>("epac::driver::ke_rot", n,
+      KOKKOS_LAMBDA(int i) { return 0.5 * double(I(i)) * double(dot(load3(w, i), load3(w, i))); });
+  const double pe = ordered_sum<exec>("epac::driver::pe_gravity", n,
+      KOKKOS_LAMBDA(int i) { return -double(m(i)) * double(dot(gravity, load3(x, i))); });
   s.ke_translational = ke;
   s.ke_rotational = kr;
   s.pe_gravity = pe;
@@ -78,25 +80,19 @@ void sample_state(const Particles<T, Device>& p, const Kokkos::View<unsigned cha
 
   s.wall_force.assign(nwalls, 0.0);
   if (nwalls > 0 && walls.count > 0) {
-    Kokkos::View<double*, Device> wf("epac::driver::wall_force", nwalls);
     auto fn = wall_out.normal_force;
     auto wl = walls.second;
-    Kokkos::parallel_for("epac::driver::wall_force", Kokkos::RangePolicy<exec>(0, walls.count),
-        KOKKOS_LAMBDA(int k) { Kokkos::atomic_add(&wf(wl(k)), double(fn(k))); });
-    auto h = Kokkos::create_mirror_view(wf);
-    Kokkos::deep_copy(h, wf);
-    for (int k = 0; k < nwalls; ++k) s.wall_force[k] = h(k);
+    for (int wall = 0; wall < nwalls; ++wall)
+      s.wall_force[wall] = ordered_sum<exec>("epac::driver::wall_force", walls.count,
+          KOKKOS_LAMBDA(int k) { return wl(k) == wall ? double(fn(k)) : 0.0; });
   }
 
   s.driven_force = {0, 0, 0};
   if (any_driven) {
     auto f = p.force;
-    for (int d = 0; d < 3; ++d) {
-      double sum = 0;
-      Kokkos::parallel_reduce("epac::driver::driven_force", Kokkos::RangePolicy<exec>(0, n),
-          KOKKOS_LAMBDA(int i, double& a) { if (driven(i)) a += double(f(i, d)); }, sum);
-      s.driven_force[d] = sum;
-    }
+    for (int d = 0; d < 3; ++d)
+      s.driven_force[d] = ordered_sum<exec>("epac::driver::driven_force", n,
+          KOKKOS_LAMBDA(int i) { return driven(i) ? double(f(i, d)) : 0.0; });
   }
 }
 

@@ -25,6 +25,7 @@ struct RunOptions {
   bool phase_times = false;          // --phase-times: seconds per loop phase in summary.json "phases"
   std::int64_t time_after = -1;      // --time-after N: also time steps N+1.. alone (summary.json "timed")
   bool overwrite = false;            // --overwrite: replace the epac outputs of an earlier run in out_dir
+  bool deterministic = false;        // --deterministic: as [run] deterministic = true (either turns it on)
 };
 
 struct RunSummary {

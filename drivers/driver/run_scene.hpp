@@ -18,6 +18,7 @@
 #include "driver/stop_signal.hpp"
 
 #include <epac/compute/contact_forces.hpp>
+#include <epac/compute/deterministic_pass.hpp>
 #include <epac/compute/particle_sums.hpp>
 #include <epac/params/state_validation.hpp>
 #include <epac/state/particles.hpp>
@@ -302,6 +303,12 @@ RunSummary run_scene(const Scene& scene, const RunOptions& opt) {
   det.detect(p, walls, &on_sort);
   det.remap(p);
   wall_driver.mark_build();
+  // Deterministic mode ([run] deterministic, --deterministic): per-contact buffers summed per
+  // particle in key order (compute/deterministic_pass.hpp); its incidences follow every rebuild.
+  const bool deterministic = opt.deterministic || scene.run.deterministic;
+  DeterministicPass<T, Device> det_pass;
+  if (deterministic) det_pass.rebuild(p, det.pairs, det.walls);
+  if (info && deterministic) std::printf("deterministic mode: the same bits on any thread count\n");
   // One accumulator for all passes (its per-thread copies are allocated once); rebound if the
   // particle views are ever reallocated.
   ForceSums<T, Device> sums(p);
@@ -337,11 +344,15 @@ RunSummary run_scene(const Scene& scene, const RunOptions& opt) {
     if (with_outputs) size_outputs();
     if (!sums.bound_to(p)) sums = ForceSums<T, Device>(p);
     const ContactOutputs<T, Device> none{};
-    sums.begin();
-    compute_pair_forces(model, p, det.pairs, det.pair_history, step_dt, sums, with_outputs ? pair_out : none);
+    if (deterministic) det_pass.begin(model);
+    else sums.begin();
+    compute_pair_forces(model, p, det.pairs, det.pair_history, step_dt, sums, with_outputs ? pair_out : none,
+                        det_pass.pair_buffer);
     if (nw > 0)
-      compute_wall_forces(model, p, walls, det.walls, det.wall_history, step_dt, sums, with_outputs ? wall_out : none);
-    sums.end();
+      compute_wall_forces(model, p, walls, det.walls, det.wall_history, step_dt, sums, with_outputs ? wall_out : none,
+                          det_pass.wall_buffer);
+    if (deterministic) det_pass.end(model, p);
+    else sums.end();
     phases.lap(Phase::force);
     if (with_outputs && contacts_csv) {  // before after_forces: the geometry the force pass saw
       contacts_csv->write(step, step * scene.run.dt,
@@ -451,6 +462,7 @@ RunSummary run_scene(const Scene& scene, const RunOptions& opt) {
       wall_driver.mark_build();
       phases.lap(Phase::detection);
       det.remap(p);
+      if (deterministic) det_pass.rebuild(p, det.pairs, det.walls);
       phases.lap(Phase::remap);
     }
     // SIGINT/SIGTERM: this step is the last; it writes its sample like the final step.

@@ -524,6 +524,7 @@ void parse_run(TableReader& top, Scene& s) {
   s.run.contact_output = r.boolean("contact_output", false);
   s.run.particle_output = r.boolean("particle_output", false);
   s.run.spatial_sort = r.boolean("spatial_sort", false);
+  s.run.deterministic = r.boolean("deterministic", false);
   s.run.snapshot_format = r.string("snapshot_format").value_or("none");
   if (s.run.snapshot_format != "none" && s.run.snapshot_format != "vtp")
     throw SceneError("run.snapshot_format = \"" + s.run.snapshot_format + "\" is not a snapshot format (valid: \"none\", \"vtp\")");

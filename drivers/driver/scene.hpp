@@ -129,6 +129,7 @@ struct RunSpec {
   bool contact_output = false;       // contacts.csv at every output step
   bool particle_output = false;      // particles.csv at every output step
   bool spatial_sort = false;         // reorder the particle arrays in cell order at every rebuild
+  bool deterministic = false;        // the kernels' deterministic mode: same bits on any thread count
   std::string snapshot_format = "none";  // "vtp": ParaView/OVITO snapshots at every output step
 };
 

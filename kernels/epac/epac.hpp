@@ -5,8 +5,11 @@
 #include <epac/version.hpp>
 
 #include <epac/compute/contact_forces.hpp>
+#include <epac/compute/contact_side_sums.hpp>
+#include <epac/compute/deterministic_pass.hpp>
 #include <epac/compute/deterministic_reduce.hpp>
 #include <epac/compute/history_remap.hpp>
+#include <epac/compute/ordered_sum.hpp>
 #include <epac/core/build_info.hpp>
 #include <epac/core/kokkos_compat.hpp>
 #include <epac/core/root_solve.hpp>

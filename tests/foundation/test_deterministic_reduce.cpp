@@ -60,8 +60,8 @@ TEMPLATE_TEST_CASE("deterministic reduction: same bits for any list order and ba
   for (std::size_t i = 0; i < n; ++i)
     for (int d = 0; d < 3; ++d) {
       // Each contact's terms are the same bits in either list order; the per-particle sums run
-      // in key order, so they are the same bits too. (Swapping a contact's i and j is another
-      // contact for round-off purposes: v_i - v_j and v_j - v_i round differently.)
+      // in key order, so they are the same bits too. (Swapped (j, i) listings, every law, walls
+      // and MDR growth: test_deterministic_mode.cpp.)
       diff_bits += a.first(i, d) != b.first(i, d);
       diff_bits += a.second(i, d) != b.second(i, d);
       fmax = std::max(fmax, double(std::abs(a.first(i, d))));

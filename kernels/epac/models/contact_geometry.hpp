@@ -20,6 +20,8 @@ struct ContactGeometry {
   T R_eff = 0;          // R_i R_j / (R_i + R_j), or R_i for walls
   T m_eff = 0;          // m_i m_j / (m_i + m_j), or m_i for walls
   bool i_is_first = true;  // gid_i < gid_j: fixes per-side history order for side-based laws
+                           // (always true in the pair kernel, which evaluates pairs in that order)
+  int contact = -1;     // index of the contact in its list (per-contact buffers of the deterministic mode)
   Vec3<T> n;            // unit normal, pointing from j (or the wall) to i
   T dt = 0;
 };

@@ -30,7 +30,9 @@
 // - Radius growth: each side's terms go to the particle sums (mdr_radius_growth.hpp; per-thread
 //   copies on host backends, atomics on GPUs); call bind(particles) once and update_radii() after
 //   every force pass (design.md section 4 step 4); update_radii also clears the copies for the
-//   next pass, so no begin call is needed.
+//   next pass, so no begin call is needed. Deterministic mode (compute/deterministic_pass.hpp):
+//   the terms are stored per contact side (growth_terms) and added per particle in key order.
+#include <epac/compute/contact_side_sums.hpp>
 #include <epac/models/contact_geometry.hpp>
 #include <epac/models/effects.hpp>
 #include <epac/models/mdr/mdr_pair_split.hpp>
@@ -82,6 +84,9 @@ struct Mdr {
   int nmat = 0;
   T xi = T(1);
   MdrGrowthState<T, Device> growth;  // bound by bind() when Eff::radius_growth
+  // Deterministic mode: the growth terms (columns of growth.sums) per contact side, enabled by
+  // begin_deterministic_pass; side 0 of a pair is the particle with the smaller global id.
+  ContactSideSums<T, 3, Device> growth_terms;
 
   // --- history access ---
   static KOKKOS_INLINE_FUNCTION int side_base(int s) { return pair_fields + s * side_fields; }
@@ -219,8 +224,12 @@ struct Mdr {
       if (Write) {
         if (grows) {
           const bool plastic_loading = r.plastic && r.loading && r.F > T(0);
-          mdr_growth_add_side(growth, growth.sums.scatter.access(), part[s], R0s[s], c.inv_3kappa, r.F, dside[s],
-                              Rs[s], plastic_loading, st[s].delta_o_prev, st[s].eps_prev);
+          if (growth_terms.enabled)  // deterministic mode: this side's slot (s is the global-id order)
+            mdr_growth_add_side(growth, growth_terms.access(is_pair, g.contact, s), part[s], R0s[s], c.inv_3kappa,
+                                r.F, dside[s], Rs[s], plastic_loading, st[s].delta_o_prev, st[s].eps_prev);
+          else
+            mdr_growth_add_side(growth, growth.sums.scatter.access(), part[s], R0s[s], c.inv_3kappa, r.F, dside[s],
+                                Rs[s], plastic_loading, st[s].delta_o_prev, st[s].eps_prev);
         }
         store_changed(row, s, before, st[s], r.plastic);
       }
@@ -324,6 +333,19 @@ struct Mdr {
   // per-thread copies of the pass are added first and cleared after: mdr_radius_growth.hpp).
   void update_radii() const {
     if (Eff::radius_growth && growth.bound()) mdr_update_radii(growth);
+  }
+
+  // Deterministic mode (compute/deterministic_pass.hpp calls these): before the pass's kernels,
+  // room for the lists' contacts with every side's terms zero; after them, the terms added to
+  // the growth sums per particle in key order (then update_radii as usual).
+  void begin_deterministic_pass(int pair_contacts, int wall_contacts) {
+    if (Eff::radius_growth && growth.bound()) growth_terms.begin(pair_contacts, wall_contacts);
+  }
+  void end_deterministic_pass(const Particles<T, Device>& p, const ContactList<Device>& pairs,
+                              const ContactIncidence<Device>& pair_incidence,
+                              const ContactIncidence<Device>& wall_incidence) const {
+    if (Eff::radius_growth && growth.bound() && growth_terms.enabled)
+      reduce_side_sums(p, growth_terms, pairs, pair_incidence, wall_incidence, growth.sums.target);
   }
 
   // Cumulative guard counts of the radius update (MdrGrowthGuard order); zeros without growth.
