@@ -6,6 +6,7 @@
 
 #include <epac/compute/contact_forces.hpp>
 #include <epac/compute/deterministic_reduce.hpp>
+#include <epac/compute/history_from_overlaps.hpp>
 #include <epac/compute/history_remap.hpp>
 #include <epac/core/build_info.hpp>
 #include <epac/core/kokkos_compat.hpp>
