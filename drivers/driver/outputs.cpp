@@ -118,6 +118,15 @@ void write_summary_json(const std::string& path, const RunSummary& s) {
     for (const auto& kv : s.model_counters) c[kv.first] = kv.second;
     j["model_counters"] = c;
   }
+  const InitialHistorySummary& ih = s.initial_history;
+  j["initial_history"] = {{"mode", ih.mode}, {"overlapping_contacts", ih.overlapping_contacts},
+                          {"max_overlap_ratio", ih.max_overlap_ratio}};
+  if (ih.applied) {
+    j["initial_history"]["increments"] = ih.increments;
+    j["initial_history"]["max_radius_ratio"] = ih.max_radius_ratio;
+    j["initial_history"]["guard_hits"] = ih.guard_hits;
+  }
+  j["warnings"] = s.warnings;
   std::ofstream out(path);
   if (!out) throw std::runtime_error("cannot write '" + path + "'");
   out << j.dump(2) << '\n';

@@ -6,6 +6,8 @@
 #include "driver/contact_sampling.hpp"
 #include "driver/diagnostics.hpp"
 #include "driver/effect_selection.hpp"
+#include "driver/guard_warning.hpp"
+#include "driver/initial_history.hpp"
 #include "driver/integrator.hpp"
 #include "driver/model_factory.hpp"
 #include "driver/outputs.hpp"
@@ -289,6 +291,11 @@ RunSummary run_scene(const Scene& scene, const RunOptions& opt) {
     };
   det.detect(p, walls, &on_sort);
   det.remap(p);
+  // [run] initial_history: contacts overlapping at step 0 start from a quasi-static load
+  if (start_history(scene, model, p, walls, det, sum, info)) {
+    det.detect(p, walls, &on_sort);  // the load grew radii past the skin rule
+    det.remap(p);
+  }
   wall_driver.mark_build();
   // One accumulator for all passes (its per-thread copies are allocated once); rebound if the
   // particle views are ever reallocated.
@@ -460,6 +467,7 @@ RunSummary run_scene(const Scene& scene, const RunOptions& opt) {
   if (phases.enabled()) sum.phases = phases.results();
   if (scene.box.enabled) sum.box_edge.assign(box.edge().begin(), box.edge().end());
   F::report(model, sum);
+  warn_on_guard_hits(sum);
   write_summary_json(sum.summary_path, sum);
   if (info) {
     for (const auto& kv : sum.model_counters) std::printf("%s = %.10g\n", kv.first.c_str(), kv.second);

@@ -130,6 +130,9 @@ struct RunSpec {
   bool particle_output = false;      // particles.csv at every output step
   bool spatial_sort = false;         // reorder the particle arrays in cell order at every rebuild
   std::string snapshot_format = "none";  // "vtp": ParaView/OVITO snapshots at every output step
+  // "from_overlaps": contacts overlapping at step 0 get the history of a quasi-static load to
+  // their overlap (compute/history_from_overlaps.hpp); "zero": fresh history.
+  std::string initial_history = "from_overlaps";
 };
 
 struct Scene {
