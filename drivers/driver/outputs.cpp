@@ -194,6 +194,15 @@ void write_summary_json(const std::string& path, const RunSummary& s) {
     for (const auto& kv : s.model_counters) c[kv.first] = kv.second;
     j["model_counters"] = c;
   }
+  const InitialHistorySummary& ih = s.initial_history;
+  j["initial_history"] = {{"mode", ih.mode}, {"overlapping_contacts", ih.overlapping_contacts},
+                          {"max_overlap_ratio", ih.max_overlap_ratio}};
+  if (ih.applied) {
+    j["initial_history"]["increments"] = ih.increments;
+    j["initial_history"]["max_radius_ratio"] = ih.max_radius_ratio;
+    j["initial_history"]["guard_hits"] = ih.guard_hits;
+  }
+  j["warnings"] = s.warnings;
   write_file_atomic(path, j.dump(2) + "\n");
 }
 

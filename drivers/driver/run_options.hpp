@@ -28,6 +28,17 @@ struct RunOptions {
   bool deterministic = false;        // --deterministic: as [run] deterministic = true (either turns it on)
 };
 
+// How the contact history started ([run] initial_history, driver/initial_history.hpp).
+struct InitialHistorySummary {
+  std::string mode = "zero";       // what was done: "from_overlaps" or "zero"
+  bool applied = false;            // history_from_overlaps ran
+  int overlapping_contacts = 0;    // contacts overlapping at step 0
+  double max_overlap_ratio = 0;    // largest overlap / min(R_o) at step 0
+  int increments = 0;              // load increments (applied only)
+  double max_radius_ratio = 1;     // largest R / R_o after the load (MDR growth)
+  long long guard_hits = 0;        // growth-guard hits during the load
+};
+
 struct RunSummary {
   // "completed", "diverged" (the divergence watch stopped it; status_reason says which particle,
   // quantity, value and bound) or "interrupted" (SIGINT/SIGTERM; stop_signal is the signal).
@@ -65,6 +76,8 @@ struct RunSummary {
   std::string timeseries_path, summary_path;
   // Model-specific counters (ModelFactoryBase::report), e.g. MDR guard hits; in summary.json.
   std::vector<std::pair<std::string, double>> model_counters;
+  InitialHistorySummary initial_history;
+  std::vector<std::string> warnings;  // also printed to stderr; summary.json "warnings"
 };
 
 }  // namespace driver

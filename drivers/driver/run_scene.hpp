@@ -6,6 +6,8 @@
 #include "driver/contact_sampling.hpp"
 #include "driver/diagnostics.hpp"
 #include "driver/effect_selection.hpp"
+#include "driver/guard_warning.hpp"
+#include "driver/initial_history.hpp"
 #include "driver/integrator.hpp"
 #include "driver/model_factory.hpp"
 #include "driver/outputs.hpp"
@@ -302,6 +304,11 @@ RunSummary run_scene(const Scene& scene, const RunOptions& opt) {
     };
   det.detect(p, walls, &on_sort);
   det.remap(p);
+  // [run] initial_history: contacts overlapping at step 0 start from a quasi-static load
+  if (start_history(scene, model, p, walls, det, sum, info)) {
+    det.detect(p, walls, &on_sort);  // the load grew radii past the skin rule
+    det.remap(p);
+  }
   wall_driver.mark_build();
   // Deterministic mode ([run] deterministic, --deterministic): per-contact buffers summed per
   // particle in key order (compute/deterministic_pass.hpp); its incidences follow every rebuild.
@@ -514,6 +521,7 @@ RunSummary run_scene(const Scene& scene, const RunOptions& opt) {
   if (phases.enabled()) sum.phases = phases.results();
   if (scene.box.enabled) sum.box_edge.assign(box.edge().begin(), box.edge().end());
   F::report(model, sum);
+  warn_on_guard_hits(sum);
   // Every file gets its final name, whole rows only; summary.json last: its presence says the
   // folder holds one run's complete outputs, its status whether the run completed.
   csv.commit();

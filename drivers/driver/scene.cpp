@@ -528,6 +528,10 @@ void parse_run(TableReader& top, Scene& s) {
   s.run.snapshot_format = r.string("snapshot_format").value_or("none");
   if (s.run.snapshot_format != "none" && s.run.snapshot_format != "vtp")
     throw SceneError("run.snapshot_format = \"" + s.run.snapshot_format + "\" is not a snapshot format (valid: \"none\", \"vtp\")");
+  s.run.initial_history = r.string("initial_history").value_or("from_overlaps");
+  if (s.run.initial_history != "from_overlaps" && s.run.initial_history != "zero")
+    throw SceneError("run.initial_history = \"" + s.run.initial_history +
+                     "\" is not a history start (valid: \"from_overlaps\", \"zero\")");
   r.finish();
 }
 

@@ -131,6 +131,9 @@ struct RunSpec {
   bool spatial_sort = false;         // reorder the particle arrays in cell order at every rebuild
   bool deterministic = false;        // the kernels' deterministic mode: same bits on any thread count
   std::string snapshot_format = "none";  // "vtp": ParaView/OVITO snapshots at every output step
+  // "from_overlaps": contacts overlapping at step 0 get the history of a quasi-static load to
+  // their overlap (compute/history_from_overlaps.hpp); "zero": fresh history.
+  std::string initial_history = "from_overlaps";
 };
 
 struct Scene {

@@ -8,6 +8,7 @@
 #include <epac/compute/contact_side_sums.hpp>
 #include <epac/compute/deterministic_pass.hpp>
 #include <epac/compute/deterministic_reduce.hpp>
+#include <epac/compute/history_from_overlaps.hpp>
 #include <epac/compute/history_remap.hpp>
 #include <epac/compute/ordered_sum.hpp>
 #include <epac/core/build_info.hpp>
