@@ -5,12 +5,15 @@
 #include <backends.hpp>
 #include <epac/compute/contact_forces.hpp>
 
+#include <cmath>
 #include <vector>
 
 namespace epac {
 namespace test {
 
-template <class Model>
+// Growth = true (MDR with radius growth): the particles are bound to the model and their radii
+// updated after every force pass.
+template <class Model, bool Growth = false>
 class ContactStepper {
  public:
   using T = typename Model::scalar_type;
@@ -19,7 +22,7 @@ class ContactStepper {
   // Pair: particles of radii R0, R1 and materials m0, m1. Wall (R1 <= 0): particle of radius R0
   // and material m0 against a wall of material m1 (normal -x, at x = R0 - delta).
   ContactStepper(const Model& model, double R0, double R1, int m0, int m1)
-      : model_(model), pair_(R1 > 0), R0_(R0), R1_(R1), p_(pair_ ? 2 : 1), w_(pair_ ? 0 : 1), c_(1),
+      : model_(model), pair_(R1 > 0), p_(pair_ ? 2 : 1), w_(pair_ ? 0 : 1), c_(1),
         h_(1, Model::history_size) {
     auto r = Kokkos::create_mirror_view(p_.radius);
     auto m = Kokkos::create_mirror_view(p_.mass);
@@ -41,26 +44,36 @@ class ContactStepper {
     }
     out_.normal_force = Kokkos::View<T*, D>("fn", 1);
     out_.overlap = Kokkos::View<T*, D>("delta", 1);
+    if constexpr (Growth) model_.bind(p_);
   }
 
   // One force pass at apparent overlap delta (negative: a gap); returns the normal force on the
   // particle along n (law + damping; 0 when inactive). overlap() is the delta the kernel saw.
   double step(double delta) {
+    auto r = to_host(p_.radius);  // the current (grown) radii: delta is the apparent overlap
     if (pair_) {
       auto x = Kokkos::create_mirror_view(p_.x);
-      x(1, 0) = T(R0_ + R1_ - delta);
+      x(1, 0) = T(double(r(0)) + double(r(1)) - delta);
       Kokkos::deep_copy(p_.x, x);
     } else {
       auto wp = Kokkos::create_mirror_view(w_.point);
-      wp(0, 0) = T(R0_ - delta);
+      wp(0, 0) = T(double(r(0)) - delta);
       Kokkos::deep_copy(w_.point, wp);
     }
     zero_forces(p_);
     if (pair_) compute_pair_forces(model_, p_, c_, h_, T(0), out_);
     else compute_wall_forces(model_, p_, w_, c_, h_, T(0), out_);
-    return to_host(out_.normal_force)(0);
+    const double f = to_host(out_.normal_force)(0);
+    if constexpr (Growth) model_.update_radii();
+    return f;
   }
   double overlap() const { return to_host(out_.overlap)(0); }
+  bool radii_finite() const {
+    auto r = to_host(p_.radius);
+    for (int k = 0; k < p_.n; ++k)
+      if (!std::isfinite(double(r(k)))) return false;
+    return true;
+  }
 
   std::vector<double> history() const {
     auto h = to_host(h_.data);
@@ -88,7 +101,6 @@ class ContactStepper {
  private:
   Model model_;
   bool pair_;
-  double R0_, R1_;
   Particles<T, D> p_;
   Walls<T, D> w_;
   ContactList<D> c_;
