@@ -163,3 +163,45 @@ TEMPLATE_LIST_TEST_CASE("MDR detachment fuzz: random mixed pairs and walls, path
   // with radius growth (the issue's setting); paths that go non-finite before the jump are item 0's
   detachment_fuzz<typename TestType::device, typename TestType::scalar, true>(200);
 }
+
+TEMPLATE_LIST_TEST_CASE("MDR critical displacement at the edges: finite, in [-Delta l(B/2), 0], a side holds above it only",
+                        "[mdr][adhesion][detach][guard]", BackendsAndScalars) {
+  using D = typename TestType::device;
+  using T = typename TestType::scalar;
+  // lambda = E A^2 / (pi gamma B) of the critical-radius cubic from 1e-12 (adhesion dominates: a_c
+  // -> B/2) to 1e12 (a_c -> 0, d_c -> 0-), on an elastic (A = 2B) and a flat plastic (A = 0.01 B) ellipse
+  const int n = 25;
+  Kokkos::View<double**, Kokkos::LayoutRight, D> o("o", 2 * n, 5);
+  Kokkos::View<double*, D> lam("lambda", n);
+  {
+    auto hl = Kokkos::create_mirror_view(lam);
+    for (int k = 0; k < n; ++k) hl(k) = std::pow(10.0, -12.0 + 24.0 * k / (n - 1));
+    Kokkos::deep_copy(lam, hl);
+  }
+  Kokkos::parallel_for(Kokkos::RangePolicy<typename D::execution_space>(0, 1), KOKKOS_LAMBDA(int) {
+    for (int shape = 0; shape < 2; ++shape)
+      for (int k = 0; k < n; ++k) {
+        const T E = T(1), B = T(2), A = shape == 0 ? T(4) : T(0.02);
+        const T lambda = T(lam(k));
+        const T gamma = E * A * A / (constants<T>::pi * lambda * B);
+        const T dc = mdr_critical_displacement(E, gamma, A, B);
+        o(shape * n + k, 0) = dc;
+        o(shape * n + k, 1) = mdr_critical_extension(E, gamma, T(0.5) * B);
+        // the side law just above and just below d_c, from a stored a = B/2 (deepest contact)
+        const T step = math::max(T(1e-3) * math::fabs(dc), T(1e-30));
+        o(shape * n + k, 2) = mdr_adhesive_force(E, gamma, T(1), A, B, dc + step, T(0.5) * B).F;
+        o(shape * n + k, 3) = mdr_adhesive_force(E, gamma, T(1), A, B, dc - step, T(0.5) * B).F;
+        o(shape * n + k, 4) = mdr_adhesive_force(E, gamma, T(1), A, B, dc - step, T(0.5) * B).state;
+      }
+  });
+  auto h = to_host(o);
+  for (int r = 0; r < 2 * n; ++r) {
+    INFO("row " << r << " d_c " << h(r, 0));
+    REQUIRE(std::isfinite(h(r, 0)));
+    CHECK(h(r, 0) <= 0.0);
+    CHECK(h(r, 0) >= -h(r, 1) * (1 + 1e-5));  // d_c >= -Delta l(B/2): the driver's range bound
+    CHECK(h(r, 3) == 0.0);                    // below d_c: separated, no force
+    CHECK(h(r, 4) == kMdrSeparated);
+    if (h(r, 0) < -1e-20) CHECK(h(r, 2) < 0.0);  // above d_c: still pulls
+  }
+}
