@@ -26,7 +26,10 @@
 // - Friction: the foundation's tangential spring with k_t = (4 G*/E*) k_n = 8 G* a-bar (Mindlin,
 //   Nan (22)); its Coulomb limit mu |f| uses the MDR force including adhesive tension.
 // - A contact is inactive (its history reset, tangential history too) once the apparent overlap is
-//   <= 0 and no side holds an adhesive radius; the grown radius stays.
+//   <= 0 and no side holds an adhesive radius, or once the surfaces are apart by more than the
+//   contact's critical overlap (mdr_detachment.hpp), whatever the sides' histories; the reset
+//   happens in the step that releases it, so a re-approach starts as a new contact. The grown
+//   radius stays.
 // - Radius growth: each side's terms go to the particle sums (mdr_radius_growth.hpp; per-thread
 //   copies on host backends, atomics on GPUs); call bind(particles) once and update_radii() after
 //   every force pass (design.md section 4 step 4); update_radii also clears the copies for the
@@ -35,6 +38,7 @@
 #include <epac/compute/contact_side_sums.hpp>
 #include <epac/models/contact_geometry.hpp>
 #include <epac/models/effects.hpp>
+#include <epac/models/mdr/mdr_detachment.hpp>
 #include <epac/models/mdr/mdr_pair_split.hpp>
 #include <epac/models/mdr/mdr_parameters.hpp>
 #include <epac/models/mdr/mdr_radius_growth.hpp>
@@ -135,7 +139,10 @@ struct Mdr {
     const int part[2] = {swap ? g.j : g.i, swap ? g.i : g.j};
     const T Rs[2] = {swap ? g.R_j : g.R_i, swap ? g.R_i : g.R_j};
 
-    // adhesive hold: an open contact stays while a side keeps an adhesive radius
+    // adhesive hold: an open contact stays while a side keeps an adhesive radius, unless the
+    // surfaces are apart by more than its critical overlap (asked only at delta <= 0: there it
+    // cannot depend on how the split shares a positive overlap, and compressed contacts pay nothing;
+    // a critical overlap above 0, heavy plastic flow with weak adhesion, is reached by the side law)
     T a_adh_old[2] = {T(0), T(0)};
     bool adhesive_hold = false;
     if (Eff::adhesion)
@@ -143,13 +150,9 @@ struct Mdr {
         a_adh_old[s] = row(side_base(s) + kPlasticFields);
         adhesive_hold = adhesive_hold || a_adh_old[s] > T(0);
       }
-    if (!(g.delta > T(0)) && !adhesive_hold) {
-      // open contact: everything is reset (the grown radius stays)
-      if (Write)
-        for (int k = 0; k < normal_history_size; ++k) row(k) = T(0);
-      if (nf_out) *nf_out = NormalForce<T>();
-      return o;
-    }
+    if ((!(g.delta > T(0)) && !adhesive_hold) ||
+        (Eff::adhesion && adhesive_hold && !(g.delta > T(0)) && g.delta < critical_overlap(g, row)))
+      return released<Write>(g, row, nf_out);
     o.active = true;
 
     const MdrPairConstants<T>& pc = pairs(g.pair);  // reference: load only the fields used
@@ -234,6 +237,8 @@ struct Mdr {
         store_changed(row, s, before, st[s], r.plastic);
       }
     }
+    // every side separated at a gap this step: released now, not at the next evaluation
+    if (Eff::adhesion && !(g.delta > T(0)) && a_adh_sum == T(0)) return released<Write>(g, row, nf_out);
     const T inv = is_pair ? T(0.5) : T(1);  // 1 / nsides
     o.force = F * inv;
     o.area = area_sum * inv;
@@ -258,6 +263,47 @@ struct Mdr {
       *nf_out = nf;
     }
     return o;
+  }
+
+  // A released contact (the surfaces apart, delta <= 0): no force, inactive (the kernel resets the
+  // tangential history) and the normal history reset, as for a new contact.
+  template <bool Write>
+  KOKKOS_INLINE_FUNCTION MdrContactOutput<T> released(const ContactGeometry<T>& g, const HistoryRow<T, Device>& row,
+                                                      NormalForce<T>* nf_out) const {
+    if (Write)
+      for (int k = 0; k < normal_history_size; ++k) row(k) = T(0);
+    if (nf_out) *nf_out = NormalForce<T>();
+    MdrContactOutput<T> o;
+    o.sides = g.j >= 0 ? 2 : 1;
+    return o;
+  }
+
+  // The contact's critical overlap for its stored state: the sum of its sides' (a wall: its one
+  // side's), mdr_detachment.hpp. Below it (more apart) the contact is released whatever its
+  // history; hosts can size neighbour lists with it. Needs Eff::adhesion for a value below the
+  // residual overlaps.
+  KOKKOS_INLINE_FUNCTION T critical_overlap(const ContactGeometry<T>& g, const HistoryRow<T, Device>& row) const {
+    const bool is_pair = g.j >= 0;
+    const bool swap = is_pair && !g.i_is_first;
+    const int part[2] = {swap ? g.j : g.i, swap ? g.i : g.j};
+    const T Rs[2] = {swap ? g.R_j : g.R_i, swap ? g.R_i : g.R_j};
+    const MdrPairConstants<T>& pc = pairs(g.pair);
+    const bool grows = Eff::radius_growth && growth.bound();
+    T critical = T(0);
+    for (int s = 0; s < (is_pair ? 2 : 1); ++s) {
+      const bool side_b = (s == 0) == swap;  // as in evaluate
+      const int b = side_base(s);
+      MdrSideState<T> st;
+      if (Eff::plasticity) {
+        st.delta_o_max = row(b + 0);
+        st.yielded = row(b + 1);
+        st.c_A = row(b + 2);
+      }
+      const T grown = grows ? Rs[s] - growth.radius0(part[s]) : T(0);
+      const T gamma_s = Eff::adhesion ? (side_b ? pc.gamma_b : pc.gamma_a) : T(0);
+      critical += mdr_side_critical_overlap<Eff::plasticity>(side_b ? pc.side_b : pc.side_a, gamma_s, Rs[s], grown, st);
+    }
+    return critical;
   }
 
   // Stores the side's fields that the step changed (a plastic step always rewrites delta_p).
