@@ -220,7 +220,7 @@ struct Mdr {
         if (grows) {
           const bool plastic_loading = r.plastic && r.loading && r.F > T(0);
           mdr_growth_add_side(growth, growth.sums.scatter.access(), part[s], R0s[s], c.inv_3kappa, r.F, dside[s],
-                              Rs[s], plastic_loading, st[s].delta_o_prev, st[s].eps_prev);
+                              Rs[s], plastic_loading, r.plastic, st[s].delta_o_prev, st[s].eps_prev);
         }
         store_changed(row, s, before, st[s], r.plastic);
       }
