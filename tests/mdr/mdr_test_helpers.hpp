@@ -219,5 +219,71 @@ FlatTrace run_flats(Model model, double R0, const std::vector<double>& delta_o_p
   return tr;
 }
 
+
+// --- two particles on the x axis pressed through a sequence of total overlaps ---
+// Particle 0 (radius R0, material 0, gid 0) at the origin, particle 1 (radius R1, material m1,
+// gid 1) on +x at centre distance R0_o + R1_o - delta (measured with the initial radii, so a
+// growing radius adds to the apparent overlap as in a packing). Radius growth is applied after
+// every pass (update_radii) when the model has it. Records the normal force on particle 0 along n
+// (law output), both radii and the largest |force component|.
+struct PairTrace {
+  std::vector<double> delta, F, R0, R1;
+  bool finite = true;
+  int first_non_finite = -1;
+};
+
+template <class Model, class D, class T = typename Model::scalar_type>
+PairTrace run_pair_path(Model model, double R0, double R1, int m1, const std::vector<double>& overlaps) {
+  Particles<T, D> p(2);
+  {
+    auto r = Kokkos::create_mirror_view(p.radius);
+    auto m = Kokkos::create_mirror_view(p.mass);
+    auto g = Kokkos::create_mirror_view(p.gid);
+    auto mat = Kokkos::create_mirror_view(p.material);
+    r(0) = T(R0); r(1) = T(R1); m(0) = T(1); m(1) = T(1); g(0) = 0; g(1) = 1; mat(0) = 0; mat(1) = m1;
+    Kokkos::deep_copy(p.radius, r);
+    Kokkos::deep_copy(p.radius0, r);
+    Kokkos::deep_copy(p.mass, m);
+    Kokkos::deep_copy(p.gid, g);
+    Kokkos::deep_copy(p.material, mat);
+  }
+  model.bind(p);
+  ContactList<D> c(1);
+  {
+    auto f = Kokkos::create_mirror_view(c.first);
+    auto s = Kokkos::create_mirror_view(c.second);
+    f(0) = 0; s(0) = 1;
+    Kokkos::deep_copy(c.first, f);
+    Kokkos::deep_copy(c.second, s);
+  }
+  ContactHistory<T, D> h(1, Model::history_size);
+  ContactOutputs<T, D> out;
+  out.normal_force = Kokkos::View<T*, D>("fn", 1);
+  auto x = Kokkos::create_mirror_view(p.x);
+  PairTrace tr;
+  for (double d : overlaps) {
+    x(0, 0) = T(0);
+    x(1, 0) = T(R0 + R1 - d);
+    Kokkos::deep_copy(p.x, x);
+    zero_forces(p);
+    compute_pair_forces(model, p, c, h, T(0), out);
+    model.update_radii();
+    auto fn = to_host(out.normal_force);
+    auto f = to_host(p.force);
+    auto r = to_host(p.radius);
+    tr.delta.push_back(d);
+    tr.F.push_back(fn(0));
+    tr.R0.push_back(r(0));
+    tr.R1.push_back(r(1));
+    const bool ok = std::isfinite(double(fn(0))) && std::isfinite(double(f(0, 0))) && std::isfinite(double(f(1, 0))) &&
+                    std::isfinite(double(r(0))) && std::isfinite(double(r(1)));
+    if (!ok && tr.finite) {
+      tr.finite = false;
+      tr.first_non_finite = static_cast<int>(tr.F.size()) - 1;
+    }
+  }
+  return tr;
+}
+
 }  // namespace test
 }  // namespace epac

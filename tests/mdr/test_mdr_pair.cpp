@@ -149,8 +149,20 @@ TEMPLATE_LIST_TEST_CASE("MDR pair split: radical plane, 0.75 R cap, residuals re
   CHECK(h(1, 1) == Approx(0.75).epsilon(tol));
   CHECK(h(2, 0) == Approx(0.1).epsilon(tol));
   CHECK(h(2, 1) == Approx(0.05).epsilon(tol));
-  const double h0 = 0.3 * (6 - 0.3) / (2 * (4 - 0.3));
-  CHECK(h(3, 0) == Approx(0.5 * (h0 + 0.1)).epsilon(tol));
+  // halfway (x = delta - (e0 + e1) = X / 2): e0 + h0(x) + (x / X) (E0 - h0(X)), h0(.) the radical
+  // height (mdr_pair_split.hpp; the old linear split gave (h0 + 0.1) / 2 here)
+  auto hc = [](double d) { return d * (6 - d) / (2 * (4 - d)); };
+  const double h0 = hc(0.3);
+  CHECK(h(3, 0) == Approx(0.1 + hc(0.075) + 0.5 * (h0 - 0.1 - hc(0.15))).epsilon(tol));
+  CHECK(h(3, 0) + h(3, 1) == Approx(0.225).epsilon(tol));
+  // residuals summing to more than dmax (side 1's clipped to its height h1 = dmax - h0): delta
+  // lies below the clipped sum, so both sides sit below their residuals by at most the distance
+  const double e1 = 0.3 - h0, below = 0.2 + e1 - 0.25;
+  CHECK(h(5, 0) <= 0.2 + tol);
+  CHECK(h(5, 1) <= e1 + tol);
+  CHECK(h(5, 0) >= 0.2 - below - tol);
+  CHECK(h(5, 1) >= e1 - below - tol);
+  CHECK(h(5, 0) + h(5, 1) == Approx(0.25).epsilon(tol));
   for (int r = 0; r < 7; ++r) { CHECK(std::isfinite(h(r, 0))); CHECK(std::isfinite(h(r, 1))); }
   CHECK(h(4, 0) == Approx(0.75).epsilon(tol));
   CHECK(h(4, 0) + h(4, 1) == Approx(4.5).epsilon(tol));

@@ -5,38 +5,19 @@
 //   - a contact driven through load / unload / reload cycles to separation returns at most the
 //     work put in (W_net = integral of F d(delta) over the closed path >= 0, to round-off).
 // Each law is driven through the contact kernel itself (compute_wall_forces / compute_pair_forces).
-#include <backends.hpp>
+#include "stability_helpers.hpp"
+
 #include <catch2/catch.hpp>
-#include <epac/compute/contact_forces.hpp>
-#include <epac/models/hertz_mindlin.hpp>
-#include <epac/models/jkr/jkr.hpp>
-#include <epac/models/mdr/mdr_model.hpp>
-#include <epac/models/nan2022/nan2022.hpp>
 
 #include <cmath>
 #include <vector>
 
 using namespace epac;
+using namespace epac::test;
 
 namespace {
-constexpr unsigned kAll = kAdhesion | kPlasticity | kFriction | kDamping;
-
-Material mat(double E, double Y, double gamma, double R) {
-  Material m;
-  m.name = "m"; m.youngs_modulus = E; m.poisson_ratio = 0.3; m.density = 2500;
-  m.restitution = 0.5; m.friction = 0.5; m.surface_energy = gamma * E * R;  // gamma: Delta gamma / (E R)
-  m.yield_stress = Y;
-  return m;
-}
-Material rigid() { Material m; m.name = "wall"; m.rigid = true; return m; }
-
-template <class T> struct MakeHM { using M = HertzMindlin<T, Effects<kFriction | kDamping>>; static M make(const Material& a) { return M::create({a, rigid()}); } };
-template <class T> struct MakeJkr { using M = Jkr<T, Effects<kAll>>; static M make(const Material& a) { return M::create({a, rigid()}); } };
-template <class T> struct MakeNan {
-  using M = Nan2022<T, Effects<kAll>>;
-  static M make(const Material& a) { return M::create({a, rigid()}); }
-};
-template <class T> struct MakeMdr { using M = Mdr<T, Effects<kAll>>; static M make(const Material& a) { return M::create({a, rigid()}); } };
+Material mat(double E, double Y, double gamma, double R) { return stability_material(E, Y, gamma, R); }
+Material rigid() { return stability_wall(); }
 
 // One sphere of radius R against wall 0 (plane z = 0) and a second sphere (pair), both at
 // overlap delta; returns the two z-forces on the first sphere.
@@ -85,7 +66,7 @@ void sweep_finite() {
       for (double EY : {6.25, 1e4})
         for (double gamma : {0.0, 1e-3}) {
           const Material m = mat(E, E / EY, gamma, R);
-          Probe<typename Make<T>::M> probe(Make<T>::make(m), R, 2500 * 4.19 * R * R * R);
+          Probe<typename Make<T>::M> probe(Make<T>::make({m, rigid()}), R, 2500 * 4.19 * R * R * R);
           const double vmax = 10.0;
           std::vector<double> path;  // host
           for (double d = 1e-9; d < 0.9; d *= 1.6) path.push_back(d * R);   // load to 0.9 R
@@ -117,7 +98,7 @@ void cycle_creates_no_energy() {
     for (double gamma : {0.0, 2e-5}) {
       const double R = 1e-5, E = 1e9;
       const Material m = mat(E, E / EY, gamma, R);
-      Probe<typename Make<T>::M> probe(Make<T>::make(m), R, 2500 * 4.19 * R * R * R);
+      Probe<typename Make<T>::M> probe(Make<T>::make({m, rigid()}), R, 2500 * 4.19 * R * R * R);
       std::vector<double> path;  // host, in units of R
       auto ramp = [&](double a, double b, int n) { for (int k = 1; k <= n; ++k) path.push_back(a + (b - a) * k / n); };
       path.push_back(-0.01);

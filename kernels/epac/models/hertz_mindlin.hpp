@@ -60,6 +60,9 @@ struct HertzMindlin {
         const Material& B = materials[b];
         if (A.rigid && B.rigid) { h(a * m.nmat + b) = {T(0), T(0), T(0), T(0)}; continue; }
         const PairProperties pp = pair_properties(A, B);
+        const std::string from = "the moduli of '" + A.name + "' and '" + B.name + "'";  // host
+        require_representable<T>("hertz_mindlin: E_star", pp.E_star, from);
+        require_representable<T>("hertz_mindlin: kt_over_kn", 4.0 * pp.G_star / pp.E_star, from);
         h(a * m.nmat + b) = {T(pp.E_star), T(4.0 * pp.G_star / pp.E_star),
                              T(hertz_damping_coefficient(pp.restitution)), T(pp.friction)};
       }

@@ -41,4 +41,23 @@ inline void require_positive(const std::string& name, double value, bool allow_i
                 allow_inf);
 }
 
+
+// Requires a constant derived on the host (in double) to be usable in the kernels' scalar type T:
+// finite, and 0 or of magnitude within T's normal range [numeric_limits<T>::min(), max()]. In float a
+// modulus, energy or yield stress whose derived constant overflows becomes inf, and one that
+// underflows becomes 0 or a denormal that a later division turns into inf (issue 10 item 0).
+// `from` names the inputs the constant is derived from.
+template <class T>
+void require_representable(const std::string& name, double value, const std::string& from) {  // host
+  const double lo = static_cast<double>(std::numeric_limits<T>::min());
+  const double hi = static_cast<double>(std::numeric_limits<T>::max());
+  const double a = std::fabs(value);
+  if (std::isfinite(value) && (a == 0.0 || (a >= lo && a <= hi))) return;
+  std::ostringstream s;
+  s << name << " = " << value << " (derived from " << from << ") is outside the range representable in "
+    << (sizeof(T) == sizeof(float) ? "float" : sizeof(T) == sizeof(double) ? "double" : "the scalar type")
+    << ": |value| must be 0 or in [" << lo << ", " << hi << "]";
+  throw ParameterError(s.str());  // host
+}
+
 }  // namespace epac

@@ -87,6 +87,12 @@ struct Jkr {
         const Material& B = materials[b];
         if (A.rigid && B.rigid) { h(a * m.nmat + b) = {T(0), T(0), T(0), T(0), T(0), T(0)}; continue; }
         const PairProperties pp = pair_properties(A, B);
+        const std::string from = "the moduli and surface energies of '" + A.name + "' and '" + B.name + "'";  // host
+        require_representable<T>("hertz_jkr: E_star", pp.E_star, from);
+        require_representable<T>("hertz_jkr: surface_energy", pp.surface_energy, from);
+        require_representable<T>("hertz_jkr: kt_over_kn", 4.0 * pp.G_star / pp.E_star, from);
+        require_representable<T>("hertz_jkr: cbrt(2 pi gamma / E_star)",
+                                 std::cbrt(2.0 * constants<double>::pi * pp.surface_energy / pp.E_star), from);
         h(a * m.nmat + b) = {T(pp.E_star), T(pp.surface_energy), T(4.0 * pp.G_star / pp.E_star),
                              T(hertz_damping_coefficient(pp.restitution)), T(pp.friction),
                              T(std::cbrt(2.0 * constants<double>::pi * pp.surface_energy / pp.E_star))};

@@ -229,10 +229,10 @@ struct Mdr {
           const bool plastic_loading = r.plastic && r.loading && r.F > T(0);
           if (growth_terms.enabled)  // deterministic mode: this side's slot (s is the global-id order)
             mdr_growth_add_side(growth, growth_terms.access(is_pair, g.contact, s), part[s], R0s[s], c.inv_3kappa,
-                                r.F, dside[s], Rs[s], plastic_loading, st[s].delta_o_prev, st[s].eps_prev);
+                                r.F, dside[s], Rs[s], plastic_loading, r.plastic, st[s].delta_o_prev, st[s].eps_prev);
           else
             mdr_growth_add_side(growth, growth.sums.scatter.access(), part[s], R0s[s], c.inv_3kappa, r.F, dside[s],
-                                Rs[s], plastic_loading, st[s].delta_o_prev, st[s].eps_prev);
+                                Rs[s], plastic_loading, r.plastic, st[s].delta_o_prev, st[s].eps_prev);
         }
         store_changed(row, s, before, st[s], r.plastic);
       }

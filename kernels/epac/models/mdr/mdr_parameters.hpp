@@ -22,7 +22,8 @@ namespace epac {
 enum class MdrGrowthRule {
   plastic_loading,  // authors' implementation (default): sides in plastic loading with a
                     // positive MDR force; each side's Delta V^e from its own Christoffersen term
-  all_contacts      // paper, Appendix E: every touching side; Delta V^e from the particle's volume
+  all_contacts      // paper, Appendix E: every touching side (epac: every touching yielded side,
+                    // mdr_radius_growth.hpp); Delta V^e from the particle's volume
 };
 
 // Where the elastic regime ends (Section 5.6.5).
@@ -170,6 +171,20 @@ MdrSideConstants<T> mdr_side_constants(const Material& m, MdrYieldOnset onset) {
   const double xy = mdr_yield_ratio(E_eff, m.yield_stress, onset);
   c.x_yield = std::isfinite(xy) ? T(xy) : std::numeric_limits<T>::infinity();
   mdr_fill_derived(c);
+  // every constant the kernels use must be a normal number of T (float: moduli and yield stresses
+  // between about 1e-38 and 3e38, after the factors below)
+  const std::string n = "mdr: material '" + m.name + "': ", from = "its modulus, Poisson ratio and yield stress";  // host
+  const double G = m.shear_modulus(), kappa = m.youngs_modulus / (3.0 * (1.0 - 2.0 * nu));
+  require_representable<T>(n + "E_eff", E_eff, from);
+  require_representable<T>(n + "G", G, from);
+  require_representable<T>(n + "kappa", kappa, from);
+  require_representable<T>(n + "4 / E_eff", 4.0 / E_eff, from);
+  require_representable<T>(n + "1 / (3 kappa)", 1.0 / (3.0 * kappa), from);
+  require_representable<T>(n + "E_eff (nu - 1) / (2 G)", E_eff * (nu - 1.0) / (2.0 * G), from);
+  if (std::isfinite(m.yield_stress)) {
+    require_representable<T>(n + "yield_stress", m.yield_stress, from);
+    require_representable<T>(n + "1.75 yield_stress", 1.75 * m.yield_stress, from);
+  }
   return c;
 }
 
@@ -190,6 +205,12 @@ MdrPairConstants<T> mdr_pair_constants(const Material& a, const Material& b,
   // gamma_s = Delta gamma E* / E_eff,s (mdr_model.hpp header); E_eff > 0 for deformable sides
   p.gamma_a = a.rigid ? T(0) : T(pp.surface_energy * pp.E_star / double(p.side_a.E_eff));
   p.gamma_b = b.rigid ? T(0) : T(pp.surface_energy * pp.E_star / double(p.side_b.E_eff));
+  const std::string n = "mdr: pair '" + a.name + "'-'" + b.name + "': ";  // host
+  const std::string from = "the two materials' moduli and surface energies";  // host
+  require_representable<T>(n + "E_star", pp.E_star, from);
+  require_representable<T>(n + "surface_energy", pp.surface_energy, from);
+  if (!a.rigid) require_representable<T>(n + "side a surface energy", pp.surface_energy * pp.E_star / double(p.side_a.E_eff), from);
+  if (!b.rigid) require_representable<T>(n + "side b surface energy", pp.surface_energy * pp.E_star / double(p.side_b.E_eff), from);
   return p;
 }
 

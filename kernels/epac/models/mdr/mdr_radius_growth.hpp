@@ -23,8 +23,12 @@
 //                    - pi d(delta_o) (2 delta_o R_o - delta_o^2 + R^2 - R_o^2)
 //     denominator += 2 pi R (delta_o + R - R_o)
 //   plastic_loading rule (default, authors' code): sides in plastic loading (yielded, delta at
-//   delta_max, F > 0); all_contacts rule (paper): every side with delta > 0, and Delta V^e =
-//   -(V_new - V_old) of the whole particle, added in the update kernel.
+//   delta_max, F > 0); all_contacts rule (paper): every yielded side with delta > 0, and Delta V^e =
+//   -(V_new - V_old) of the whole particle, added in the update kernel. epac leaves out the sides
+//   that have not yielded: (37) conserves the volume of plastic (incompressible) deformation, and
+//   an elastic contact's cap is taken up elastically (Hertz). Counting them, the cap-volume term
+//   grew R on every elastic loading once delta/R exceeded ~0.02, and since R never shrinks, a
+//   closed cycle of a non-yielding sphere returned 0.63% more work than it took (issue 10).
 // Update: dR = max(numerator / D, 0), D = denominator - 4 pi R^2, with the guards of MdrOptions
 // (D <= -denominator_floor 4 pi R^2; R <= radius_cap R_o; V >= volume_floor V_o), each counted.
 #include <epac/compute/particle_sums.hpp>
@@ -87,12 +91,12 @@ struct MdrGrowthState {
 // Force pass, one side of a contact on particle p. acc: this contact's access object of gs.sums
 // (gs.sums.scatter.access()); R0: the particle's R_o; inv_3kappa: 1/(3 kappa) of its material;
 // F: the side's MDR force (no damping); delta: its apparent overlap; R: the particle's current
-// radius; plastic_loading: yielded, delta at its running maximum and F > 0. Updates the side's
-// history (delta_o_prev, eps_prev).
+// radius; plastic_loading: yielded, delta at its running maximum and F > 0; yielded: the side is
+// fully plastic (all_contacts rule). Updates the side's history (delta_o_prev, eps_prev).
 template <class T, class Device, class Access>
 KOKKOS_FORCEINLINE_FUNCTION void mdr_growth_add_side(const MdrGrowthState<T, Device>& gs, const Access& acc, int p,
                                                      T R0, T inv_3kappa, T F, T delta, T R, bool plastic_loading,
-                                                     T& delta_o_prev, T& eps_prev) {
+                                                     bool yielded, T& delta_o_prev, T& eps_prev) {
   const T pi = constants<T>::pi;
   const T V = gs.volume(p);  // >= volume_floor V_o > 0 (update kernel guard)
   const T b = math::max(R - delta, T(0));  // branch length; >= 0 past the centre (guard)
@@ -100,7 +104,7 @@ KOKKOS_FORCEINLINE_FUNCTION void mdr_growth_add_side(const MdrGrowthState<T, Dev
   acc(p, int(MdrGrowthState<T, Device>::kEps)) += eps;
   const T delta_o = delta - (R - R0);
   const bool contributes =
-      gs.rule == MdrGrowthRule::plastic_loading ? plastic_loading : (delta > T(0));
+      gs.rule == MdrGrowthRule::plastic_loading ? plastic_loading : (yielded && delta > T(0));
   if (contributes) {
     const T ddo = delta_o - delta_o_prev;
     T num = -pi * ddo * (T(2) * delta_o * R0 - delta_o * delta_o + R * R - R0 * R0);
@@ -137,7 +141,9 @@ void mdr_update_radii(const MdrGrowthState<T, Device>& gs) {
           Kokkos::atomic_add(&s.guard_hits(kMdrGuardVolume), 1);
         }
         const T V_new = V0 * factor;
-        if (s.rule == MdrGrowthRule::all_contacts) num -= V_new - s.volume(p);  // Delta V^e
+        // Delta V^e of the whole particle, only when a side contributes (den > 0: each adds
+        // 2 pi R delta > 0): else an elastic particle's volume recovering on unloading grew R
+        if (s.rule == MdrGrowthRule::all_contacts && den > T(0)) num -= V_new - s.volume(p);
         // (37). D < 0 in normal use; near 0 under high confinement (Appendix C): floored.
         T D = den - T(4) * pi * R * R;
         const T D_max = -s.denominator_floor * T(4) * pi * R * R;

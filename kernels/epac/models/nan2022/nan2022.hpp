@@ -71,7 +71,17 @@ struct Nan2022 {
     for (int k = 0; k < nmat * nmat; ++k) {
       const Nan2022PairConstants<double>& d = table[k];
       // a rigid-rigid entry is all zero (never used): skip its validation
-      if (d.E_star != 0.0) nan2022_validate(d, "nan2022 pair " + std::to_string(k));  // host
+      if (d.E_star != 0.0) {
+        const std::string name = "nan2022 pair " + std::to_string(k);  // host
+        nan2022_validate(d, name);
+        const std::string from = "the pair's moduli, surface energies, yield stresses and stiffnesses";  // host
+        require_representable<T>(name + ": E_star", d.E_star, from);
+        require_representable<T>(name + ": surface_energy", d.surface_energy, from);
+        require_representable<T>(name + ": yield_pressure", d.yield_pressure, from);
+        require_representable<T>(name + ": k_el value", d.kel_value, from);
+        require_representable<T>(name + ": k_p value", d.kp_value, from);
+        require_representable<T>(name + ": kt_over_kn", d.kt_over_kn, from);
+      }
       Nan2022PairConstants<T> t;
       t.E_star = T(d.E_star); t.surface_energy = T(d.surface_energy); t.yield_pressure = T(d.yield_pressure);
       t.yields = d.yields; t.kel_fixed = d.kel_fixed; t.kel_value = T(d.kel_value);

@@ -1,0 +1,75 @@
+// Fuzz of every law over random pair and wall paths (fuzz_paths.hpp): no NaN, no Inf, no energy
+// created on closed quasi-static cycles. The CI test runs 5000 paths (a wall and a pair path each:
+// 1e4 contact paths) per law and precision; the hidden "[.long]" test runs EPAC_FUZZ_PATHS of them
+// (default 1e5) and prints the counts:  EPAC_FUZZ_PATHS=100000 test_fuzz "[.long]".
+#include "fuzz_paths.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cstdio>
+#include <cstdlib>
+
+using namespace epac;
+using namespace epac::test;
+
+namespace {
+template <template <class> class Make, class T>
+FuzzCounts run_law(long n, std::uint64_t seed) {
+  return fuzz_paths<Make<T>, T>(n, seed);
+}
+
+template <template <class> class Make, class T>
+void check_law(long n, std::uint64_t seed) {
+  const FuzzCounts c = run_law<Make, T>(n, seed);
+  INFO(Make<T>::name << (sizeof(T) == 4 ? " float" : " double") << ": paths " << c.paths << ", rejected "
+                     << c.rejected << ", NaN " << c.nan << ", Inf " << c.inf << ", energy created "
+                     << c.energy_created << " of " << c.energy_checked << " (worst " << c.worst_energy << "); "
+                     << c.first_failure);
+  CHECK(c.paths == n);
+  CHECK(c.nan == 0);
+  CHECK(c.inf == 0);
+  CHECK(c.energy_created == 0);
+  CHECK(c.energy_checked > n / 4);  // the check ran (wall and pair of every other path, most touching)
+}
+
+template <template <class> class Make, class T>
+void report_law(long n, std::uint64_t seed) {
+  const FuzzCounts c = run_law<Make, T>(n, seed);
+  std::printf("%-14s %-6s paths %8ld contacts %10ld rejected %6ld NaN %ld Inf %ld energy created %ld of %ld "
+              "(worst (out-in)/in %.3g); MDR plastic pairs: energy created %ld of %ld%s%s\n",
+              Make<T>::name, sizeof(T) == 4 ? "float" : "double", c.paths, c.contacts, c.rejected, c.nan, c.inf,
+              c.energy_created, c.energy_checked, c.worst_energy, c.plastic_pair_energy_created,
+              c.plastic_pair_checked, c.first_failure.empty() ? "" : "; first: ",
+              c.first_failure.c_str());
+  std::fflush(stdout);
+  CHECK(c.nan == 0);
+  CHECK(c.inf == 0);
+  CHECK(c.energy_created == 0);
+}
+constexpr long kCiPaths = 5000;  // each a wall and a pair path: 1e4 contact paths per law and precision
+}  // namespace
+
+TEMPLATE_TEST_CASE("fuzz: random pair and wall paths stay finite and create no energy", "[stability][fuzz]", double,
+                   float) {
+  SECTION("hertz_mindlin") { check_law<MakeHM, TestType>(kCiPaths, 1); }
+  SECTION("hertz_jkr") { check_law<MakeJkr, TestType>(kCiPaths, 2); }
+  SECTION("nan2022") { check_law<MakeNan, TestType>(kCiPaths, 3); }
+  SECTION("mdr") { check_law<MakeMdr, TestType>(kCiPaths, 4); }
+  SECTION("mdr+growth") { check_law<MakeMdrGrowth, TestType>(kCiPaths, 5); }
+}
+
+TEST_CASE("fuzz, long: EPAC_FUZZ_PATHS random paths per law and precision (default 1e5)", "[.long]") {
+  const char* env = std::getenv("EPAC_FUZZ_PATHS");
+  const long n = env ? std::atol(env) : 100000;
+  const std::uint64_t seed = 1000;
+  report_law<MakeHM, double>(n, seed + 1);
+  report_law<MakeHM, float>(n, seed + 2);
+  report_law<MakeJkr, double>(n, seed + 3);
+  report_law<MakeJkr, float>(n, seed + 4);
+  report_law<MakeNan, double>(n, seed + 5);
+  report_law<MakeNan, float>(n, seed + 6);
+  report_law<MakeMdr, double>(n, seed + 7);
+  report_law<MakeMdr, float>(n, seed + 8);
+  report_law<MakeMdrGrowth, double>(n, seed + 9);
+  report_law<MakeMdrGrowth, float>(n, seed + 10);
+}
