@@ -326,7 +326,10 @@ void PairEpac::compute(int eflag, int vflag)
     h = epac::ContactHistory<double>(n, history_size_, "lammps.history.setup");
     Kokkos::deep_copy(h.data, history_.data);
   }
-  const double dt = update->dt;
+  // dt = 0 in setup passes: the tangential spring is not stretched again, so the force equals the
+  // one of the step that wrote the history (LAMMPS's history_update = 0); a run continued from a
+  // restart or a new `run` then retraces an uninterrupted one.
+  const double dt = advance ? update->dt : 0.0;
   if (vflag_either) {
     epac::ContactForceBuffer<double, epac::DefaultDevice> buf(n);
     engine_->compute(contacts_, h, dt, buf);
