@@ -1,0 +1,125 @@
+// make_engine: the runtime (law, effects) -> compiled model dispatch of the plugin. Only the
+// effect sets a law supports are instantiated (as in drivers/driver/dispatch.hpp), so a scene
+// without adhesion, plasticity, friction or damping runs a kernel without them.
+#include "contact_engine.hpp"
+
+#include <epac/models/hertz_mindlin.hpp>
+#include <epac/models/jkr/jkr.hpp>
+#include <epac/models/mdr/mdr_model.hpp>
+#include <epac/models/nan2022/nan2022.hpp>
+#include <epac/params/validation.hpp>
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace epac {
+namespace lammps {
+namespace {
+
+template <class Model>
+void bind_model(Model&, const Particles<double>&) {}
+template <class Eff>
+void bind_model(Mdr<double, Eff>& m, const Particles<double>& p) { m.bind(p); }
+
+template <class Model>
+class EngineFor final : public ContactEngine {
+ public:
+  EngineFor(Model m, std::vector<Material> mats) : model_(std::move(m)), materials_(std::move(mats)) {}
+  int history_size() const override { return Model::history_size; }
+  unsigned effects() const override { return Model::effects::bits; }
+  Particles<double>& particles(int n) override {
+    if (n > particles_.n || particles_.n == 0) {
+      particles_ = Particles<double>(n > 0 ? n + n / 4 : 1);  // headroom: ghost counts drift
+      sums_ = ForceSums<double, DefaultDevice>(particles_);
+      bind_model(model_, particles_);
+    }
+    return particles_;
+  }
+  void compute(const ContactList<>& pairs, const ContactHistory<double>& history, double dt,
+               const ContactForceBuffer<double, DefaultDevice>& buffer) override {
+    zero_forces(particles_);
+    sums_.begin();
+    compute_pair_forces(model_, particles_, pairs, history, dt, sums_, {}, buffer);
+    sums_.end();
+  }
+  // JKR's separation at detachment under displacement control, -delta_c = 3/4 (pi^2 w^2 R /
+  // E*^2)^(1/3) ... (Johnson 1985, (5.19)-(5.21)), taken as the bound for every adhesive law,
+  // doubled: Nan's and MDR's adhesive ranges are of the same order and the cutoff only has to
+  // reach them (a longer one costs list entries, not accuracy).
+  double critical_separation(int a, int b, double Ri, double Rj) const override {
+    const Material& A = materials_[a];
+    const Material& B = materials_[b];
+    const double w = std::max(A.surface_energy, B.surface_energy);
+    if (!(w > 0)) return 0.0;
+    const double Es = 1.0 / ((1 - A.poisson_ratio * A.poisson_ratio) / A.youngs_modulus +
+                             (1 - B.poisson_ratio * B.poisson_ratio) / B.youngs_modulus);
+    const double R = Ri * Rj / (Ri + Rj);
+    const double pi = 3.14159265358979323846;
+    return 2.0 * 0.75 * std::cbrt(pi * pi * w * w * R / (Es * Es));
+  }
+
+ private:
+  Model model_;
+  std::vector<Material> materials_;
+  Particles<double> particles_;
+  ForceSums<double, DefaultDevice> sums_;
+};
+
+template <template <class> class ModelOf, unsigned Supported, unsigned Bits = 0, class Create>
+std::unique_ptr<ContactEngine> dispatch(unsigned want, const std::vector<Material>& mats, const Create& create) {
+  if constexpr (Bits > kAllEffects) {
+    throw std::logic_error("epac plugin: no compiled instance for effects " + std::to_string(want));
+  } else if constexpr ((Bits & ~Supported) != 0u) {
+    return dispatch<ModelOf, Supported, Bits + 1>(want, mats, create);
+  } else {
+    if (want == Bits) {
+      using Model = ModelOf<Effects<Bits>>;
+      return std::make_unique<EngineFor<Model>>(create(static_cast<Model*>(nullptr)), mats);
+    }
+    return dispatch<ModelOf, Supported, Bits + 1>(want, mats, create);
+  }
+}
+
+template <class Eff> using HM = HertzMindlin<double, Eff>;
+template <class Eff> using JKR = Jkr<double, Eff>;
+template <class Eff> using NAN22 = Nan2022<double, Eff>;
+template <class Eff> using MDR = Mdr<double, Eff>;
+
+// The effects the coefficients call for (design.md section 5).
+unsigned effects_of(const std::vector<Material>& mats) {
+  unsigned e = 0;
+  for (const auto& m : mats) {
+    if (m.surface_energy > 0) e |= kAdhesion;
+    if (std::isfinite(m.yield_stress)) e |= kPlasticity;
+    if (m.friction > 0) e |= kFriction;
+    if (m.restitution < 1) e |= kDamping;
+  }
+  return e;
+}
+
+}  // namespace
+
+std::unique_ptr<ContactEngine> make_engine(Law law, const std::vector<Material>& mats) {
+  const unsigned e = effects_of(mats);
+  switch (law) {
+    case Law::hertz_mindlin:
+      return dispatch<HM, kFriction | kDamping>(e & (kFriction | kDamping), mats,
+                                                [&](auto* m) { return std::remove_pointer_t<decltype(m)>::create(mats); });
+    case Law::jkr:
+      return dispatch<JKR, kAdhesion | kFriction | kDamping>(
+          e & (kAdhesion | kFriction | kDamping), mats,
+          [&](auto* m) { return std::remove_pointer_t<decltype(m)>::create(mats); });
+    case Law::nan2022:
+      return dispatch<NAN22, kAdhesion | kPlasticity | kFriction | kDamping>(
+          e, mats, [&](auto* m) { return std::remove_pointer_t<decltype(m)>::create(mats); });
+    case Law::mdr:
+      // Radius growth needs per-atom state with ghost communication (a fix); not in this plugin yet.
+      return dispatch<MDR, kAdhesion | kPlasticity | kFriction | kDamping>(
+          e, mats, [&](auto* m) { return std::remove_pointer_t<decltype(m)>::create(mats); });
+  }
+  throw std::logic_error("epac plugin: unknown law");
+}
+
+}  // namespace lammps
+}  // namespace epac

@@ -1,0 +1,43 @@
+#pragma once
+// The epac side of the LAMMPS plugin: a host-side interface (one virtual call per force pass,
+// never inside a kernel) over one compiled contact law, chosen at `init_style` from the law and the
+// effects its coefficients call for. Each implementation owns the law's model, epac's particle
+// views and the per-backend force sums; the pair style only copies LAMMPS's arrays in and out.
+#include <epac/compute/contact_forces.hpp>
+#include <epac/params/material.hpp>
+#include <epac/state/contact_history.hpp>
+#include <epac/state/contact_list.hpp>
+#include <epac/state/particles.hpp>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace epac {
+namespace lammps {
+
+enum class Law { hertz_mindlin, jkr, nan2022, mdr };
+
+class ContactEngine {
+ public:
+  virtual ~ContactEngine() = default;
+  virtual int history_size() const = 0;
+  virtual unsigned effects() const = 0;
+  // Particle views sized for `n` (local + ghost) atoms; reallocated only when n grows.
+  virtual Particles<double>& particles(int n) = 0;
+  // One force pass over `pairs` with `history` (one row per pair): adds into particles().force
+  // and .torque (zeroed here first). With `buffer` allocated, the per-contact forces are stored
+  // there instead (for the virial).
+  virtual void compute(const ContactList<>& pairs, const ContactHistory<double>& history, double dt,
+                       const ContactForceBuffer<double, DefaultDevice>& buffer) = 0;
+  // The largest separation at which the law still holds two spheres of radii Ri, Rj of
+  // materials a, b together (0 without adhesion): the neighbour cutoff must reach it.
+  virtual double critical_separation(int a, int b, double Ri, double Rj) const = 0;
+};
+
+// Throws epac::ParameterError (naming the coefficient, its value and the valid range) for
+// materials the law rejects.
+std::unique_ptr<ContactEngine> make_engine(Law law, const std::vector<Material>& materials);
+
+}  // namespace lammps
+}  // namespace epac

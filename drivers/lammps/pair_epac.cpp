@@ -1,0 +1,403 @@
+/* PairEpac: epac's contact laws inside LAMMPS (drivers/lammps/README.md).
+   Per force pass: LAMMPS's atoms are copied into epac's particle views, the half neighbour list
+   (rebuilt by LAMMPS) into an epac contact list with the history rows of fix NEIGH_HISTORY, epac's
+   kernel runs, and forces, torques and history go back. Conventions follow the GRANULAR styles
+   (pair_granular.cpp): history is not advanced in setup passes, ghost forces are added only with
+   newton_pair on (reverse communication sums them), the cutoff reaches the adhesive range. */
+#include "pair_epac.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "error.h"
+#include "fix.h"
+#include "fix_dummy.h"
+#include "fix_neigh_history.h"
+#include "force.h"
+#include "memory.h"
+#include "modify.h"
+#include "neigh_list.h"
+#include "neighbor.h"
+#include "update.h"
+
+#include <epac/core/kokkos_compat.hpp>
+#include <epac/params/validation.hpp>
+
+#include <Kokkos_Core.hpp>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+using namespace LAMMPS_NS;
+using epac::lammps::Law;
+
+namespace {
+const char *dummy_id = "NEIGH_HISTORY_EPAC_DUMMY";
+const char *history_id = "NEIGH_HISTORY_EPAC";
+}  // namespace
+
+PairEpac::PairEpac(LAMMPS *lmp, Law law, const char *style) : Pair(lmp), law_(law), style_(style)
+{
+  single_enable = 0;
+  no_virial_fdotr_compute = 1;
+  centroidstressflag = CENTROID_NOTAVAIL;
+  finitecutflag = 1;
+  beyond_contact = (law != Law::hertz_mindlin);  // adhesive laws act beyond contact
+  nondefault_history_transfer = 1;
+  // placeholder for fix NEIGH_HISTORY, replaced in init_style (keeps the input's fix order)
+  modify->add_fix(std::string(dummy_id) + " all DUMMY");
+  if (!Kokkos::is_initialized()) {
+    // the host did not initialise Kokkos: epac does, once per process, with LAMMPS's OpenMP
+    // thread count (package omp / OMP_NUM_THREADS); finalised at exit
+    static std::unique_ptr<Kokkos::ScopeGuard> guard = epac::start_kokkos(comm->nthreads);
+  }
+}
+
+PairEpac::~PairEpac()
+{
+  if (copymode) return;
+  if (fix_history_) modify->delete_fix(history_id);
+  else modify->delete_fix(dummy_id);
+  if (allocated) {
+    memory->destroy(setflag);
+    memory->destroy(cutsq);
+  }
+  delete[] onerad_;
+  delete[] maxrad_;
+}
+
+void PairEpac::allocate()
+{
+  allocated = 1;
+  const int n = atom->ntypes;
+  memory->create(setflag, n + 1, n + 1, "pair:setflag");
+  for (int i = 1; i <= n; i++)
+    for (int j = i; j <= n; j++) setflag[i][j] = 0;
+  memory->create(cutsq, n + 1, n + 1, "pair:cutsq");
+  onerad_ = new double[n + 1];
+  maxrad_ = new double[n + 1];
+  materials_.assign(n, epac::Material{});
+  have_material_.assign(n, 0);
+}
+
+void PairEpac::settings(int narg, char **)
+{
+  if (narg != 0) error->all(FLERR, "Illegal pair_style {} command: it takes no arguments", style_);
+}
+
+// Coefficients, per law (the order of LAMMPS's granular mdr where one exists):
+//   epac/hertz_mindlin: E nu e mu
+//   epac/jkr:           E nu e mu gamma
+//   epac/nan2022:       E nu e mu gamma Y
+//   epac/mdr:           E nu Y gamma psi_b e [mu]
+// E [Pa], nu, e the normal restitution coefficient (1: no damping), mu the sliding friction
+// coefficient (0: no friction), gamma the surface energy [J/m^2] (0: no adhesion), Y the yield
+// stress [Pa] (inf: none), psi_b Part II's bulk-response threshold (not in epac: must be 0).
+int PairEpac::coefficient_count() const
+{
+  switch (law_) {
+    case Law::hertz_mindlin: return 4;
+    case Law::jkr: return 5;
+    case Law::nan2022: return 6;
+    case Law::mdr: return 6;
+  }
+  return 0;
+}
+
+epac::Material PairEpac::material_from(char **arg, int type) const
+{
+  epac::Material m;
+  m.name = "type " + std::to_string(type);
+  m.density = 1.0;  // unused: masses come from the atoms' rmass
+  auto num = [&](int k) { return utils::numeric(FLERR, arg[k], false, lmp); };
+  m.youngs_modulus = num(0);
+  m.poisson_ratio = num(1);
+  switch (law_) {
+    case Law::hertz_mindlin: m.restitution = num(2); m.friction = num(3); break;
+    case Law::jkr: m.restitution = num(2); m.friction = num(3); m.surface_energy = num(4); break;
+    case Law::nan2022:
+      m.restitution = num(2); m.friction = num(3); m.surface_energy = num(4); m.yield_stress = num(5);
+      break;
+    case Law::mdr: {
+      m.yield_stress = num(2);
+      m.surface_energy = num(3);
+      const double psi_b = num(4);
+      if (psi_b != 0.0)
+        error->all(FLERR, "pair_coeff {}: psi_b = {} is not supported (valid: 0; epac implements MDR Part I, "
+                   "without Part II's bulk response)", style_, psi_b);
+      m.restitution = num(5);
+      break;
+    }
+  }
+  return m;
+}
+
+void PairEpac::coeff(int narg, char **arg)
+{
+  if (!allocated) allocate();
+  const int nc = coefficient_count();
+  const bool mdr_mu = (law_ == Law::mdr && narg == 2 + nc + 2);
+  if (narg != 2 + nc && !mdr_mu)
+    error->all(FLERR, "Incorrect args for pair_coeff {}: expected {} coefficients", style_, nc);
+  int ilo, ihi, jlo, jhi;
+  utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
+  utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
+  // epac mixes two materials itself (its pair tables); a pair_coeff sets one type's material
+  if (!(ilo == jlo && ihi == jhi))
+    error->all(FLERR, "pair_coeff {} sets a material per atom type: use 'I I' or '* *' (epac mixes unlike "
+               "types from their materials)", style_);
+  epac::Material m = material_from(arg + 2, ilo);
+  if (mdr_mu) {
+    if (std::strcmp(arg[2 + nc], "mu") != 0)
+      error->all(FLERR, "pair_coeff {}: unknown keyword {} (valid: mu)", style_, arg[2 + nc]);
+    m.friction = utils::numeric(FLERR, arg[3 + nc], false, lmp);
+  }
+  try {
+    m.validate();
+  } catch (std::exception &e) {
+    error->all(FLERR, "pair_coeff {}: {}", style_, e.what());
+  }
+  int count = 0;
+  for (int i = ilo; i <= ihi; i++) {
+    materials_[i - 1] = m;
+    materials_[i - 1].name = "type " + std::to_string(i);
+    have_material_[i - 1] = 1;
+    for (int j = MAX(jlo, i); j <= jhi; j++) {
+      setflag[i][j] = 1;
+      count++;
+    }
+  }
+  if (count == 0) error->all(FLERR, "Incorrect args for pair coefficients");
+}
+
+void PairEpac::init_style()
+{
+  if (!atom->radius_flag || !atom->rmass_flag || !atom->omega_flag || !atom->torque_flag)
+    error->all(FLERR, "Pair {} requires atom attributes radius, rmass, omega, torque (atom_style sphere)", style_);
+  if (comm->ghost_velocity == 0)
+    error->all(FLERR, "Pair {} requires ghost atoms store velocity (comm_modify vel yes)", style_);
+  for (int t = 0; t < atom->ntypes; t++)
+    if (!have_material_[t]) error->all(FLERR, "Pair {}: no pair_coeff {} {} (every type needs a material)", style_, t + 1, t + 1);
+
+  try {
+    engine_ = epac::lammps::make_engine(law_, materials_);
+  } catch (std::exception &e) {
+    error->all(FLERR, "pair {}: {}", style_, e.what());
+  }
+  if (fix_history_ && engine_->history_size() != history_size_)
+    error->all(FLERR, "pair {}: the coefficients changed the history size ({} -> {}) after the first run; "
+               "start a new pair_style", style_, history_size_, engine_->history_size());
+  history_size_ = engine_->history_size();
+
+  neighbor->add_request(this, NeighConst::REQ_SIZE | NeighConst::REQ_HISTORY);
+  if (fix_history_ == nullptr) {
+    const int dnum = history_size_ > 0 ? history_size_ : 1;  // fix NEIGH_HISTORY needs >= 1 value
+    fix_history_ = dynamic_cast<FixNeighHistory *>(
+        modify->replace_fix(dummy_id, std::string(history_id) + " all NEIGH_HISTORY " + std::to_string(dnum), 1));
+    fix_history_->pair = this;
+  }
+
+  // largest radius per type (cutoffs), as pair granular does
+  double *radius = atom->radius;
+  int *type = atom->type;
+  for (int t = 1; t <= atom->ntypes; t++) onerad_[t] = 0.0;
+  for (int i = 0; i < atom->nlocal; i++) onerad_[type[i]] = MAX(onerad_[type[i]], radius[i]);
+  MPI_Allreduce(&onerad_[1], &maxrad_[1], atom->ntypes, MPI_DOUBLE, MPI_MAX, world);
+  last_list_ = nullptr;
+}
+
+double PairEpac::init_one(int i, int j)
+{
+  double cut = maxrad_[i] + maxrad_[j];
+  if (cut <= 0.0) {  // no atoms of these types yet: the largest cutoff of the others
+    for (int k = 1; k <= atom->ntypes; k++) cut = MAX(cut, 2.0 * maxrad_[k]);
+  }
+  if (engine_) cut += engine_->critical_separation(i - 1, j - 1, maxrad_[i], maxrad_[j]);
+  return cut;
+}
+
+void PairEpac::gather_atoms(int nall)
+{
+  auto &p = engine_->particles(nall);
+  auto x = Kokkos::create_mirror_view(p.x);
+  auto v = Kokkos::create_mirror_view(p.v);
+  auto w = Kokkos::create_mirror_view(p.omega);
+  auto R = Kokkos::create_mirror_view(p.radius);
+  auto R0 = Kokkos::create_mirror_view(p.radius0);
+  auto m = Kokkos::create_mirror_view(p.mass);
+  auto I = Kokkos::create_mirror_view(p.inertia);
+  auto mat = Kokkos::create_mirror_view(p.material);
+  auto gid = Kokkos::create_mirror_view(p.gid);
+  double **ax = atom->x, **av = atom->v, **aw = atom->omega;
+  double *radius = atom->radius, *rmass = atom->rmass;
+  int *type = atom->type;
+  tagint *tag = atom->tag;
+  Kokkos::parallel_for("epac::lammps::gather", Kokkos::RangePolicy<Kokkos::DefaultHostExecutionSpace>(0, nall),
+                       [&](int i) {
+                         for (int d = 0; d < 3; d++) {
+                           x(i, d) = ax[i][d];
+                           v(i, d) = av[i][d];
+                           w(i, d) = aw[i][d];
+                         }
+                         R(i) = radius[i];
+                         R0(i) = radius[i];
+                         m(i) = rmass[i];
+                         I(i) = 0.4 * rmass[i] * radius[i] * radius[i];
+                         mat(i) = type[i] - 1;
+                         gid(i) = static_cast<std::int64_t>(tag[i]);
+                       });
+  Kokkos::deep_copy(p.x, x); Kokkos::deep_copy(p.v, v); Kokkos::deep_copy(p.omega, w);
+  Kokkos::deep_copy(p.radius, R); Kokkos::deep_copy(p.radius0, R0); Kokkos::deep_copy(p.mass, m);
+  Kokkos::deep_copy(p.inertia, I); Kokkos::deep_copy(p.material, mat); Kokkos::deep_copy(p.gid, gid);
+}
+
+// The half list as an epac contact list, with the history slots of fix NEIGH_HISTORY; rebuilt
+// when LAMMPS rebuilt its list. Every listed pair is a contact (epac returns zero force and
+// clears the history of pairs apart beyond the law's range).
+void PairEpac::build_contacts()
+{
+  first_.clear(); second_.clear(); hist_.clear(); touch_.clear();
+  const int inum = list->inum;
+  int *ilist = list->ilist, *numneigh = list->numneigh, **firstneigh = list->firstneigh;
+  int **firsttouch = fix_history_->firstflag;
+  double **firstvalue = fix_history_->firstvalue;
+  const int dnum = fix_history_->get_dnum();
+  double *special_lj = force->special_lj;
+  for (int ii = 0; ii < inum; ii++) {
+    const int i = ilist[ii];
+    int *jlist = firstneigh[i];
+    for (int jj = 0; jj < numneigh[i]; jj++) {
+      int j = jlist[jj];
+      if (special_lj[sbmask(j)] == 0.0) continue;
+      j &= NEIGHMASK;
+      first_.push_back(i);
+      second_.push_back(j);
+      hist_.push_back(&firstvalue[i][dnum * jj]);
+      touch_.push_back(&firsttouch[i][jj]);
+    }
+  }
+  const int n = static_cast<int>(first_.size());
+  contacts_ = epac::ContactList<>(n);
+  auto f = Kokkos::create_mirror_view(contacts_.first);
+  auto s = Kokkos::create_mirror_view(contacts_.second);
+  for (int k = 0; k < n; k++) { f(k) = first_[k]; s(k) = second_[k]; }
+  Kokkos::deep_copy(contacts_.first, f);
+  Kokkos::deep_copy(contacts_.second, s);
+  history_ = epac::ContactHistory<double>(n, history_size_, "lammps.history");
+  if (history_size_ > 0) {
+    auto h = Kokkos::create_mirror_view(history_.data);
+    for (int k = 0; k < n; k++)
+      for (int q = 0; q < history_size_; q++) h(k, q) = (*touch_[k]) ? hist_[k][q] : 0.0;
+    Kokkos::deep_copy(history_.data, h);
+  }
+}
+
+void PairEpac::add_forces(int nlocal, bool with_ghosts)
+{
+  auto &p = engine_->particles(0);
+  auto F = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.force);
+  auto T = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.torque);
+  double **f = atom->f, **t = atom->torque;
+  const int n = with_ghosts ? nlocal + atom->nghost : nlocal;
+  Kokkos::parallel_for("epac::lammps::scatter", Kokkos::RangePolicy<Kokkos::DefaultHostExecutionSpace>(0, n),
+                       [&](int i) {
+                         for (int d = 0; d < 3; d++) { f[i][d] += F(i, d); t[i][d] += T(i, d); }
+                       });
+}
+
+void PairEpac::compute(int eflag, int vflag)
+{
+  ev_init(eflag, vflag);
+  const int nlocal = atom->nlocal;
+  const int nall = nlocal + atom->nghost;
+  const bool newton = force->newton_pair != 0;
+  gather_atoms(nall);
+  if (list != last_list_ || neighbor->lastcall != last_build_) {
+    build_contacts();
+    last_list_ = list;
+    last_build_ = neighbor->lastcall;
+  }
+  const int n = contacts_.count;
+  // Setup passes (run's first force evaluation) do not advance the history (pair_granular.cpp):
+  // evaluate on a copy.
+  const bool advance = update->setupflag == 0;
+  epac::ContactHistory<double> h = history_;
+  if (!advance && history_size_ > 0) {
+    h = epac::ContactHistory<double>(n, history_size_, "lammps.history.setup");
+    Kokkos::deep_copy(h.data, history_.data);
+  }
+  // dt = 0 in setup passes: the tangential spring is not stretched again, so the force equals the
+  // one of the step that wrote the history (LAMMPS's history_update = 0); a run continued from a
+  // restart or a new `run` then retraces an uninterrupted one.
+  const double dt = advance ? update->dt : 0.0;
+  if (vflag_either) {
+    epac::ContactForceBuffer<double, epac::DefaultDevice> buf(n);
+    engine_->compute(contacts_, h, dt, buf);
+    auto F = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), buf.force);
+    auto Ti = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), buf.torque_i);
+    auto Tj = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), buf.torque_j);
+    double **f = atom->f, **t = atom->torque, **x = atom->x;
+    for (int k = 0; k < n; k++) {
+      const int i = first_[k], j = second_[k];
+      for (int d = 0; d < 3; d++) { f[i][d] += F(k, d); t[i][d] += Ti(k, d); }
+      if (j < nlocal || newton)
+        for (int d = 0; d < 3; d++) { f[j][d] -= F(k, d); t[j][d] += Tj(k, d); }
+      ev_tally_xyz(i, j, nlocal, force->newton_pair, 0.0, 0.0, F(k, 0), F(k, 1), F(k, 2), x[i][0] - x[j][0],
+                   x[i][1] - x[j][1], x[i][2] - x[j][2]);
+    }
+  } else {
+    engine_->compute(contacts_, h, dt, {});
+    add_forces(nlocal, newton);
+  }
+  if (advance && history_size_ > 0) {
+    auto hv = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), history_.data);
+    Kokkos::parallel_for("epac::lammps::history_out", Kokkos::RangePolicy<Kokkos::DefaultHostExecutionSpace>(0, n),
+                         [&](int k) {
+                           bool any = false;
+                           for (int q = 0; q < history_size_; q++) {
+                             hist_[k][q] = hv(k, q);
+                             any = any || hv(k, q) != 0.0;
+                           }
+                           // fix NEIGH_HISTORY carries only flagged rows across rebuilds
+                           *touch_[k] = any ? 1 : 0;
+                         });
+  }
+}
+
+void PairEpac::transfer_history(double *source, double *target, int, int)
+{
+  for (int q = 0; q < history_size_; q++) target[q] = source[q];
+}
+
+void PairEpac::write_restart(FILE *fp)
+{
+  for (int i = 1; i <= atom->ntypes; i++) {
+    const epac::Material &m = materials_[i - 1];
+    const double v[7] = {m.youngs_modulus, m.poisson_ratio, m.restitution, m.friction, m.surface_energy,
+                         m.yield_stress, static_cast<double>(have_material_[i - 1])};
+    fwrite(v, sizeof(double), 7, fp);
+  }
+}
+
+void PairEpac::read_restart(FILE *fp)
+{
+  allocate();
+  for (int i = 1; i <= atom->ntypes; i++) {
+    double v[7];
+    if (comm->me == 0) utils::sfread(FLERR, v, sizeof(double), 7, fp, nullptr, error);
+    MPI_Bcast(v, 7, MPI_DOUBLE, 0, world);
+    epac::Material &m = materials_[i - 1];
+    m.name = "type " + std::to_string(i);
+    m.density = 1.0;
+    m.youngs_modulus = v[0]; m.poisson_ratio = v[1]; m.restitution = v[2]; m.friction = v[3];
+    m.surface_energy = v[4]; m.yield_stress = v[5];
+    have_material_[i - 1] = v[6] != 0.0;
+    for (int j = i; j <= atom->ntypes; j++) setflag[i][j] = have_material_[i - 1] && have_material_[j - 1];
+  }
+}
+
+double PairEpac::memory_usage()
+{
+  return static_cast<double>(first_.size()) * (2 * sizeof(int) + sizeof(double *) + sizeof(int *)) +
+         static_cast<double>(history_.bytes());
+}

@@ -1,0 +1,68 @@
+/* epac contact laws as LAMMPS pair styles (plugin; drivers/lammps/README.md).
+   One class serves every law: the law is fixed by the style name, its compiled model is chosen in
+   init_style from the effects the coefficients call for (contact_engine.hpp). */
+#ifndef EPAC_LAMMPS_PAIR_EPAC_H
+#define EPAC_LAMMPS_PAIR_EPAC_H
+
+#include "contact_engine.hpp"
+#include "pair.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace LAMMPS_NS {
+
+class FixNeighHistory;
+
+class PairEpac : public Pair {
+ public:
+  PairEpac(class LAMMPS *lmp, epac::lammps::Law law, const char *style);
+  ~PairEpac() override;
+
+  void compute(int eflag, int vflag) override;
+  void settings(int narg, char **arg) override;
+  void coeff(int narg, char **arg) override;
+  void init_style() override;
+  double init_one(int i, int j) override;
+  void write_restart(FILE *fp) override;
+  void read_restart(FILE *fp) override;
+  void write_restart_settings(FILE *) override {}
+  void read_restart_settings(FILE *) override {}
+  // epac keeps every history field in the frame of the contact's smaller atom ID, so a row
+  // moves between the two atoms' lists unchanged (LAMMPS's default negates it).
+  void transfer_history(double *source, double *target, int, int) override;
+  double memory_usage() override;
+
+ protected:
+  void allocate();
+  void gather_atoms(int nall);
+  void build_contacts();
+  void add_forces(int nlocal, bool with_ghosts);
+  int coefficient_count() const;
+  epac::Material material_from(char **arg, int type) const;
+
+  epac::lammps::Law law_;
+  std::string style_;
+  std::vector<epac::Material> materials_;  // index: atom type - 1
+  std::vector<int> have_material_;
+  std::unique_ptr<epac::lammps::ContactEngine> engine_;
+  FixNeighHistory *fix_history_ = nullptr;
+  int history_size_ = 0;
+  bool history_fix_made_ = false;
+  double *onerad_ = nullptr, *maxrad_ = nullptr;  // per type: largest radius (local, global)
+
+  // the contact list of the current neighbour list: pair k is (i, j) = (first, second) and its
+  // history row lives at LAMMPS's fix NEIGH_HISTORY slot hist_[k] with touch flag touch_[k]
+  epac::ContactList<> contacts_;
+  epac::ContactHistory<double> history_;
+  std::vector<double *> hist_;
+  std::vector<int *> touch_;
+  std::vector<int> first_, second_;
+  void *last_list_ = nullptr;
+  bigint last_build_ = -1;
+};
+
+}  // namespace LAMMPS_NS
+
+#endif
