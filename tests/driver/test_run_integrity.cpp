@@ -211,7 +211,7 @@ TEST_CASE("a folder with another run's outputs is refused, and keeps them", "[dr
   }
 }
 
-TEST_CASE("--overwrite removes the earlier run's outputs, and only those", "[driver][outputs][integrity]") {
+TEST_CASE("option overwrite removes the earlier run's outputs, and only those", "[driver][outputs][integrity]") {
   const fs::path dir = fresh_out_dir("overwrite");
   // first run: contacts, particles and snapshots besides the timeseries
   run(parse_scene_string(pair_scene(1e-6, 20, "contact_output = true\nparticle_output = true\nsnapshot_format = \"vtp\"")),
@@ -347,7 +347,7 @@ TEST_CASE("epac-run exit statuses: used folder 2, --overwrite 0, diverged 3", "[
   CHECK(summary_of(dir / "out_huge")["status"] == "diverged");
 }
 
-TEST_CASE("--threads above the machine's CPUs is clamped with a warning and does not crash", "[driver][cli][threads]") {
+TEST_CASE("option threads above the machine's CPUs is clamped with a warning and does not crash", "[driver][cli][threads]") {
   cpu_set_t set;
   REQUIRE(sched_getaffinity(0, sizeof set, &set) == 0);
   const int cpus = CPU_COUNT(&set);
