@@ -15,17 +15,7 @@ prefix="${EPAC_LAMMPS_PREFIX:-$HOME/.cache/epac/lammps/4Feb2025}"
 build="${EPAC_BUILD_DIR:-$root/build}"
 jobs=$(nproc)
 
-bash "$root/cmake/install-deps.sh"
-missing=()
-for p in libopenmpi-dev openmpi-bin; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
-done
-if ((${#missing[@]})); then
-  echo "[epac] installing: ${missing[*]}"
-  SUDO=""; [ "$(id -u)" -eq 0 ] || SUDO="sudo"
-  $SUDO apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
-fi
+bash "$root/cmake/install-deps.sh" libopenmpi-dev openmpi-bin
 
 lmp="$prefix/build/lmp"
 src="$prefix/src/lammps-4Feb2025"
