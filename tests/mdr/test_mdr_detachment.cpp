@@ -73,7 +73,30 @@ TEMPLATE_LIST_TEST_CASE("MDR detachment: one step past the critical overlap rele
     };
     CHECK(-dc < bound(a, R0) + (pair ? bound(b, R1) : 0.0));
 
-    for (const double target : {-200.0 * R0, dc * (1 + eps), dc * (1 - eps)}) {
+    // Where a single jump from the loaded state stops pulling. A wall's one side holds down to its
+    // critical overlap. A pair's two sides are in series across a flat in (scaled) force balance
+    // (mdr_pair_balance.hpp), so the pair lets go when its weaker side reaches its own critical
+    // overlap, at or above the sum of the sides' (the release bound, which it must never pass):
+    // found here by bisection over fresh jumps.
+    double hold = dc;
+    if (pair) {
+      auto pulls = [&](double target) {
+        ContactStepper<M> s = fresh();
+        for (double d : load) s.step(d);
+        return s.step(target) < 0.0;
+      };
+      double lo = dc, hi = 0.0;  // pulls at hi (just below contact), not at lo (released)
+      REQUIRE(pulls(0.5 * dc));
+      hi = 0.5 * dc;
+      for (int it = 0; it < 60 && hi - lo > 1e-9 * -dc; ++it) {
+        const double mid = 0.5 * (lo + hi);
+        (pulls(mid) ? hi : lo) = mid;
+      }
+      hold = hi;
+      CAPTURE(hold);
+      CHECK(hold >= dc);  // never holds past the release bound
+    }
+    for (const double target : {-200.0 * R0, dc * (1 + eps), hold * (1 - eps)}) {
       INFO("jump to " << target);
       ContactStepper<M> s = fresh();
       for (double d : load) s.step(d);

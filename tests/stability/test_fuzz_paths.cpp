@@ -8,14 +8,15 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <string>
 
 using namespace epac;
 using namespace epac::test;
 
 namespace {
 template <template <class> class Make, class T>
-FuzzCounts run_law(long n, std::uint64_t seed) {
-  return fuzz_paths<Make<T>, T>(n, seed);
+FuzzCounts run_law(long n, std::uint64_t seed, int refine = 1) {
+  return fuzz_paths<Make<T>, T>(n, seed, 512, refine);
 }
 
 template <template <class> class Make, class T>
@@ -34,12 +35,16 @@ void check_law(long n, std::uint64_t seed) {
 
 template <template <class> class Make, class T>
 void report_law(long n, std::uint64_t seed) {
-  const FuzzCounts c = run_law<Make, T>(n, seed);
+  // EPAC_FUZZ_LAWS: only the laws whose name contains it (e.g. "mdr"); EPAC_FUZZ_REFINE: see fuzz_paths
+  const char* laws = std::getenv("EPAC_FUZZ_LAWS");
+  if (laws && std::string(Make<T>::name).find(laws) == std::string::npos) return;
+  const char* ref = std::getenv("EPAC_FUZZ_REFINE");
+  const FuzzCounts c = run_law<Make, T>(n, seed, ref ? std::max(1, std::atoi(ref)) : 1);
   std::printf("%-14s %-6s paths %8ld contacts %10ld rejected %6ld NaN %ld Inf %ld energy created %ld of %ld "
-              "(worst (out-in)/in %.3g); MDR plastic pairs: energy created %ld of %ld%s%s\n",
+              "(worst (out-in)/in %.3g); MDR plastic pairs: energy created %ld of %ld (worst %.3g)%s%s\n",
               Make<T>::name, sizeof(T) == 4 ? "float" : "double", c.paths, c.contacts, c.rejected, c.nan, c.inf,
               c.energy_created, c.energy_checked, c.worst_energy, c.plastic_pair_energy_created,
-              c.plastic_pair_checked, c.first_failure.empty() ? "" : "; first: ",
+              c.plastic_pair_checked, c.worst_plastic_pair, c.first_failure.empty() ? "" : "; first: ",
               c.first_failure.c_str());
   std::fflush(stdout);
   CHECK(c.nan == 0);

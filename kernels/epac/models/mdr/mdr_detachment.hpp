@@ -15,9 +15,11 @@
 //   d_c >= -Delta l(B/2) >= -Delta l(R): delta_c,s >= delta_p - sqrt(2 pi R gamma_s / E_eff), the
 //   bound the driver's adhesive range uses (drivers/driver/models/mdr.cpp).
 // - A pair: the two sides are in series across the flat at the contact plane, and the split
-//   (mdr_pair_split.hpp) gives them overlaps that sum to the pair's; the pair's critical overlap is
-//   the sum of its sides' (equal elastic spheres: JKR's delta_c of the two spheres). Below it the
-//   chain is broken whatever the split does with the individual sides.
+//   (mdr_pair_balance.hpp) gives them overlaps that sum to the pair's; the pair's critical overlap
+//   is the sum of its sides' (equal elastic spheres: JKR's delta_c of the two spheres). Below it the
+//   chain is broken whatever the split does with the individual sides. The balance usually lets go
+//   earlier: when the weaker side reaches its own critical overlap, its partner is still above its
+//   own (the sum is the bound that holds for any split).
 #include <epac/models/mdr/mdr_side_force.hpp>
 
 namespace epac {

@@ -4,8 +4,10 @@
 // indexed by g.pair, history fields only for enabled effects.
 //
 // - Wall contact (g.j == -1): one side, particle i against the wall as a rigid flat.
-// - Pair: two sides split by the rigid flat at the contact plane (mdr_pair_split.hpp); side 0 is
-//   the particle with the smaller global id; the pair force is the mean of the sides' forces.
+// - Pair: two sides split by the rigid flat at the contact plane, placed where the sides' scaled
+//   forces balance (mdr_pair_balance.hpp; the geometric split of mdr_pair_split.hpp is the first
+//   guess); side 0 is the particle with the smaller global id; the pair force is the mean of the
+//   sides' forces.
 // - Each side is mdr_side_force (elastic, fully plastic, adhesive) with E_eff = E/(1-nu^2) of its
 //   own particle.
 // - Adhesion of a pair: the flat at the contact plane is fictitious, so the surface energy Delta
@@ -39,6 +41,7 @@
 #include <epac/models/contact_geometry.hpp>
 #include <epac/models/effects.hpp>
 #include <epac/models/mdr/mdr_detachment.hpp>
+#include <epac/models/mdr/mdr_pair_balance.hpp>
 #include <epac/models/mdr/mdr_pair_split.hpp>
 #include <epac/models/mdr/mdr_parameters.hpp>
 #include <epac/models/mdr/mdr_radius_growth.hpp>
@@ -195,7 +198,7 @@ struct Mdr {
         if (Write && dmax_o != old) row(0) = dmax_o;
         dmax = dmax_o + shift;
       }
-      // the residual overlaps enter the split only below dmax (mdr_split_overlap)
+      // the residual overlaps enter the geometric split only below dmax (mdr_split_overlap)
       if (Write && Eff::plasticity && dmax > T(0) && !(g.delta >= dmax))
         for (int s = 0; s < 2; ++s) st[s].delta_p = row(side_base(s) + 3);
       const MdrSideOverlaps<T> so = mdr_split_overlap(g.delta, dmax, Rs[0], Rs[1], st[0].delta_p, st[1].delta_p);
@@ -204,15 +207,40 @@ struct Mdr {
       o.delta_max = dmax;
     }
 
+    // the sides' results: a pair's from the balanced split (mdr_pair_balance.hpp, the geometric
+    // split as its first guess), a wall's side directly
+    MdrSideState<T> before[2] = {st[0], st[1]};
+    MdrSideResult<T> res[2];
+    if (is_pair) {
+      MdrPairSides<T, Eff::plasticity, Eff::adhesion> ps;
+      for (int s = 0; s < 2; ++s) {
+        const bool side_b = (s == 0) == swap;  // side 0 is material b when swapped; side 1 unless
+        ps.c[s] = side_b ? &pc.side_b : &pc.side_a;
+        // Each side's share of the surface energy: gamma_s = Delta gamma E* / E_eff,s (see the header)
+        ps.gamma[s] = Eff::adhesion ? (side_b ? pc.gamma_b : pc.gamma_a) : T(0);
+        ps.R[s] = Rs[s];
+        ps.growth[s] = growth_of[s];
+        ps.start[s] = st[s];
+      }
+      ps.xi = xi;
+      ps.delta = g.delta;
+      ps.set_weights();
+      mdr_balance_split(ps, g.delta, dside[0], Rs[0] + Rs[1]);
+      for (int s = 0; s < 2; ++s) {
+        dside[s] = ps.d[s];
+        st[s] = ps.st[s];
+        res[s] = ps.r[s];
+      }
+    } else {
+      const T gamma_w = Eff::adhesion ? pc.gamma_a : T(0);
+      res[0] = mdr_side_force<Eff::plasticity, Eff::adhesion>(pc.side_a, gamma_w, xi, dside[0], Rs[0], growth_of[0], st[0]);
+    }
+
     T F = T(0), a_sum = T(0), area_sum = T(0), a_adh_sum = T(0);
     for (int s = 0; s < nsides; ++s) {
-      const bool side_b = (s == 0) == swap;  // side 0 is material b when swapped; side 1 unless
+      const bool side_b = (s == 0) == swap;  // as above
       const MdrSideConstants<T>& c = side_b ? pc.side_b : pc.side_a;
-      // Each side's share of the surface energy: gamma_s = Delta gamma E* / E_eff,s (see the header)
-      const T gamma_s = Eff::adhesion ? (side_b ? pc.gamma_b : pc.gamma_a) : T(0);
-      const MdrSideState<T> before = st[s];
-      const MdrSideResult<T> r =
-          mdr_side_force<Eff::plasticity, Eff::adhesion>(c, gamma_s, xi, dside[s], Rs[s], growth_of[s], st[s]);
+      const MdrSideResult<T>& r = res[s];
       F += r.F;
       a_sum += r.a;
       area_sum += r.area;
@@ -234,7 +262,7 @@ struct Mdr {
             mdr_growth_add_side(growth, growth.sums.scatter.access(), part[s], R0s[s], c.inv_3kappa, r.F, dside[s],
                                 Rs[s], plastic_loading, r.plastic, st[s].delta_o_prev, st[s].eps_prev);
         }
-        store_changed(row, s, before, st[s], r.plastic);
+        store_changed(row, s, before[s], st[s], r.plastic);
       }
     }
     // every side separated at a gap this step: released now, not at the next evaluation
