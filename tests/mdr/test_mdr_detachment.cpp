@@ -62,7 +62,7 @@ TEMPLATE_LIST_TEST_CASE("MDR detachment: one step past the critical overlap rele
     ContactStepper<M> probe = fresh();
     for (double d : load) probe.step(d);
     const std::vector<double> loaded = probe.history();
-    REQUIRE(loaded[1] != 0.0);  // side 0 yielded
+    REQUIRE(loaded[M::side_base(0) + 1] != 0.0);  // side 0 yielded
     const double dc = critical_overlap_of(probe);
     CAPTURE(dc);
     REQUIRE(dc < 0);
@@ -96,7 +96,10 @@ TEMPLATE_LIST_TEST_CASE("MDR detachment: one step past the critical overlap rele
       CAPTURE(hold);
       CHECK(hold >= dc);  // never holds past the release bound
     }
-    for (const double target : {-200.0 * R0, dc * (1 + eps), hold * (1 - eps)}) {
+    // a pair's letting go is decided by which equilibrium of the two sides the balance solve
+    // reaches from a single jump (both attached, or the weaker side separated): sharp but not to
+    // round-off, so the pair's "just inside" target keeps 1% of margin
+    for (const double target : {-200.0 * R0, dc * (1 + eps), hold * (1 - (pair ? 1e-2 : eps))}) {
       INFO("jump to " << target);
       ContactStepper<M> s = fresh();
       for (double d : load) s.step(d);

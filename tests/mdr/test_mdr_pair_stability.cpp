@@ -202,9 +202,9 @@ TEMPLATE_LIST_TEST_CASE("MDR pair: the flat balances the sides' scaled forces; y
   // balance tolerance: the solve stops at a few ulps of the scaled forces or of the overlaps
   const double tol = sizeof(T) >= 8 ? 1e-9 : 2e-3;
   // identities evaluated twice (the force pass and the outputs re-solve from the stored state):
-  // round-off of T in the split, times the stiffness ratio of the sides (up to ~500 here) in the
-  // stiff side's force
-  const double same = sizeof(T) >= 8 ? 1e-12 : 1e-4;
+  // the balance tolerance (mdr_balance_tolerance: 1.4e-14 double, 9.5e-7 float) of the scaled
+  // forces, times the stiffness ratio of the sides (up to ~500 here) in the stiff side's force
+  const double same = sizeof(T) >= 8 ? 1e-11 : 1e-3;
   struct Case {
     double R0, R1, E0, E1, Y0, Y1;
   };
@@ -237,7 +237,7 @@ TEMPLATE_LIST_TEST_CASE("MDR pair: the flat balances the sides' scaled forces; y
     walk(0.4 * Rmin, -0.02 * Rmin);
     ContactStepper<M> s(model, c.R0, c.R1, 0, 1);
     std::vector<double> F;
-    double worst_balance = 0;
+    double worst_balance = 0, Fpeak = 0;
     int yielded = 0;
     for (double d : path) {
       F.push_back(s.step(d));
@@ -252,7 +252,8 @@ TEMPLATE_LIST_TEST_CASE("MDR pair: the flat balances the sides' scaled forces; y
       if (sc > 0) worst_balance = std::max(worst_balance, std::fabs(lam0 * F0 - lam1 * F1) / sc);
       if (F.back() != 0.0) {
         CHECK(side(0, 1) + side(1, 1) == Approx(s.overlap()).epsilon(same).margin(1e-6 * h));
-        CHECK(F.back() == Approx(0.5 * (F0 + F1)).epsilon(same));
+        Fpeak = std::max(Fpeak, std::fabs(F.back()));
+        CHECK(F.back() == Approx(0.5 * (F0 + F1)).epsilon(same).margin(same * 1e-2 * Fpeak));  // margin: near separation
       }
       yielded = std::max(yielded, static_cast<int>(side(0, 2)));
     }

@@ -82,7 +82,9 @@ struct Mdr {
   static constexpr int kAdhesionFields = Eff::adhesion ? 1 : 0;   // a
   static constexpr int kGrowthFields = Eff::radius_growth ? 2 : 0;  // delta_o,prev, eps_c,prev
   static constexpr int side_fields = kPlasticFields + kAdhesionFields + kGrowthFields;
-  static constexpr int pair_fields = Eff::plasticity ? 1 : 0;  // largest total delta_o (19)
+  // largest total delta_o (19); once a side yielded, the last pass's d_0, delta and
+  // w = d d_0/d delta (the balance's first guess d_0 + w (delta_now - delta), mdr_pair_balance.hpp)
+  static constexpr int pair_fields = Eff::plasticity ? 4 : 0;
   static constexpr int normal_history_size = pair_fields + 2 * side_fields;
   static constexpr int history_size = normal_history_size + (Eff::friction ? 3 : 0);
 
@@ -225,11 +227,30 @@ struct Mdr {
       ps.xi = xi;
       ps.delta = g.delta;
       ps.set_weights();
-      mdr_balance_split(ps, g.delta, dside[0], Rs[0] + Rs[1]);
+      // first guess: the geometric split; once a side yielded, the last pass's ratio (see
+      // mdr_pair_balance.hpp: elastic pairs keep a deterministic guess)
+      T guess = dside[0];
+      const bool plastic_pair = Eff::plasticity && (st[0].yielded != T(0) || st[1].yielded != T(0));
+      if (Eff::plasticity && plastic_pair) {
+        const T delta_last = row(2);
+        if (delta_last != T(0)) guess = row(1) + row(3) * (g.delta - delta_last);
+      }
+      const T d0 = mdr_balance_split(ps, g.delta, guess, Rs[0] + Rs[1]);
       for (int s = 0; s < 2; ++s) {
         dside[s] = ps.d[s];
         st[s] = ps.st[s];
         res[s] = ps.r[s];
+      }
+      if (Write && Eff::plasticity) {
+        if (st[0].yielded != T(0) || st[1].yielded != T(0)) {
+          // w = lambda_1 k_1 / (lambda_0 k_0 + lambda_1 k_1) at the root (in [0, 1] while both
+          // stiffnesses are positive; the geometric 1/2 otherwise)
+          const T k0 = ps.lambda[0] * res[0].stiffness, k1 = ps.lambda[1] * res[1].stiffness;
+          const T w = (k0 > T(0) && k1 > T(0)) ? k1 / (k0 + k1) : T(0.5);
+          row(1) = d0;
+          row(2) = g.delta != T(0) ? g.delta : T(1e-30) * (Rs[0] + Rs[1]);  // 0 marks "no last pass"
+          row(3) = w;
+        }
       }
     } else {
       const T gamma_w = Eff::adhesion ? pc.gamma_a : T(0);

@@ -92,6 +92,11 @@ struct MdrSideResult {
   T a = 0;           // contact half-width in MDR space (adhesive a when stretched)
   T delta_max = 0;   // (19)
   T area = 0;        // contact area (42) with c_A, >= 0
+  // dF/d delta of this side at this state (what a pair's balance solve needs, mdr_pair_balance.hpp;
+  // dead code for walls): 2 E_eff a on the elastic branch and on the fixed ellipse below
+  // delta_max (times 1/r there, (35)), d(pi p_Y a_max^2)/d delta on plastic loading (may be < 0
+  // near delta = R); in adhesive peeling an estimate (the edge springs' 2 E_eff a).
+  T stiffness = 0;
   bool plastic = false;
   bool loading = false;         // delta_o >= the previous delta_o,max (plastic loading test)
   bool ratio_floored = false;   // guard of (35) active
@@ -137,9 +142,16 @@ KOKKOS_FORCEINLINE_FUNCTION MdrSideResult<T> mdr_side_force(const MdrSideConstan
       s.c_A = c.cA_over_R2 * R * R;  // (43): pi (delta_Y^2 - delta_Y R), delta_Y = x_yield R
     }
   }
+  T d1De_per_delta = T(1);  // d delta_1D^e / d delta: 1/r below delta_max ((35)), 1 elastic
+  T loading_stiffness = T(0);
   if (Plasticity && s.yielded != T(0)) {
     const MdrPlasticShape<T> sh = mdr_plastic_shape(c, delta_max, R, T(1) / R, s.c_A);  // R > 0
     out.plastic = true;
+    d1De_per_delta = T(1) / sh.ratio;  // ratio >= mdr_min_recovery_ratio > 0
+    // plastic loading: F = pi p_Y a_max^2 ((30) at d = A/2 with (28)); p_Y' = -4.4/R (p_Y - Y) by
+    // (16)+(21), (a_max^2)' = 2 (R - delta) up to the equator ((36))
+    loading_stiffness = pi * (T(2) * (R - math::min(delta_max, R)) * sh.p_Y -
+                              T(4.4) * (sh.p_Y - c.Y) * sh.a_max * sh.a_max / R);
     out.A = sh.A;
     out.B = sh.B;
     // (35) rewritten as A/2 + (delta - delta_max)/r: the same value, without 0/0 at r -> 0;
@@ -166,6 +178,7 @@ KOKKOS_FORCEINLINE_FUNCTION MdrSideResult<T> mdr_side_force(const MdrSideConstan
     out.a = mdr_ellipse_contact_radius(out.A, out.B, out.d1De);
     if (Adhesion) s.a_adh = T(0);
   }
+  out.stiffness = (out.plastic && out.loading) ? loading_stiffness : T(2) * c.E_eff * out.a * d1De_per_delta;
   return out;
 }
 
