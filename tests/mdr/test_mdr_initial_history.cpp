@@ -105,7 +105,6 @@ std::vector<std::vector<double>> host_rows(const ContactHistory<T, D>& h) {
 
 // MDR history fields of one side (mdr_model.hpp layout with plasticity and growth, no adhesion):
 // delta_o_max, yielded, c_A, delta_p, delta_o_prev, eps_prev.
-constexpr int kSideFields = 6;
 
 double E = 1.0e8, kNu = 0.3;
 
@@ -169,10 +168,10 @@ TEMPLATE_LIST_TEST_CASE("history_from_overlaps, MDR wall contact: equals a load 
     CHECK(std::fabs(R_init - R_ref) < tol_growth * growth);
     const double V0 = 4.0 / 3.0 * M_PI * R0 * R0 * R0;
     CHECK(std::fabs(V_init - V_ref) < tol_growth * std::fabs(V_ref - V0) + eps * V0);
-    // a wall row has the pair field (unused) first, then the one side: index 1 + field
+    // a wall row has the pair fields (unused) first, then the one side
     auto hr = host_rows(ref.wh)[0], hi = host_rows(init.wh)[0];
-    hr.erase(hr.begin());
-    hi.erase(hi.begin());
+    hr.erase(hr.begin(), hr.begin() + M::pair_fields);
+    hi.erase(hi.begin(), hi.begin() + M::pair_fields);
     CHECK(hi[0] == Approx(hr[0]).epsilon(eps * 10));  // delta_o_max = delta_o
     CHECK(hi[0] == Approx(target).epsilon(eps * 10));
     CHECK(hi[1] == 1.0);                              // yielded
@@ -232,7 +231,7 @@ TEMPLATE_LIST_TEST_CASE("history_from_overlaps, MDR pair of unequal spheres: equ
   CHECK(hr[0] == Approx(target).epsilon(1e-12));
   for (int s = 0; s < 2; ++s) {
     INFO("side " << s);
-    const int b = 1 + s * kSideFields;
+    const int b = M::side_base(s);
     const double growth = std::fabs(Rr[s == 0 ? 1 : 0] - radii0[s == 0 ? 1 : 0]);  // side 0: smaller gid
     CHECK(hi[b + 0] == Approx(hr[b + 0]).epsilon(0.02));  // the side's delta_o,max: split by the grown radii
     CHECK(hi[b + 1] == hr[b + 1]);
@@ -321,7 +320,9 @@ TEMPLATE_LIST_TEST_CASE("history_from_overlaps, MDR fcc cluster at 0.2 R: equals
     CHECK(std::fabs(Ri[i] - Rr[i]) < 0.05 * growth + 1e-12 * R);
   }
   REQUIRE(max_growth > 0.01 * R);
-  CHECK(rep.max_radius_ratio == Approx(1.0 + max_growth / R).epsilon(0.02 * max_growth / R));
+  // the largest ratio, within the per-particle bound above (5% of the growth: the balanced pair
+  // split moves with the grown radii, K = 100 increments against 2000 steps)
+  CHECK(rep.max_radius_ratio == Approx(1.0 + max_growth / R).epsilon(0.05 * max_growth / R));
 
   // The next passes at the same positions: no further growth to speak of. A fresh history at the
   // same positions takes the whole overlap as one plastic increment: R jumps by more than the
