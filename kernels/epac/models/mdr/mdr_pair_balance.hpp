@@ -115,40 +115,31 @@ KOKKOS_INLINE_FUNCTION T mdr_balance_split(Pair& pair, T delta, T guess, T span,
     // One side without force and the other pushing (or pulling): the root is at or beyond the
     // other side's zero-force overlap, which Newton approaches only geometrically (F ~ d^(3/2)):
     // go there directly (pair.zero_force_split: false when not known, e.g. adhesive contact).
-    T xz = x;
-    if (pair.zero_force_split(xz) && xz != x && (!bracketed || (xz - a) * (xz - b) < T(0)) && xz >= lo_lim &&
-        xz <= hi_lim) {
-      const T gz = pair(xz);
-      ++n;
-      x = xz;
-      g = gz;
-      if (math::fabs(g) < math::fabs(gb)) { xb = x; gb = g; }
-      if (balanced(g)) return finish(x, true, have_a && have_b);
-      if (g < T(0)) { a = x; have_a = true; }
-      else { b = x; have_b = true; }
-      continue;
-    }
-    const T slope = pair.slope();
-    T xn;
-    const T xnewt = x - g / slope;
-    const bool newton = newton_ok && slope > T(0) && xnewt == xnewt &&
-                        (bracketed ? (xnewt - a) * (xnewt - b) < T(0) : true);
-    if (newton) {
-      xn = xnewt;
-    } else if (bracketed) {
-      xn = T(0.5) * (a + b);
-    } else {
-      // no slope to trust and no bracket yet: step outward, growing
-      const T dir = g > T(0) ? T(-1) : T(1);
-      last_step = T(2) * last_step;
-      xn = x + dir * last_step;
-    }
-    if (!bracketed) {
-      // before a sign change: within the search limits (a Newton step that does not halve |g|
-      // hands over to the growing outward steps)
-      last_step = math::max(last_step, math::fabs(xn - x));
-      xn = math::clamp(xn, lo_lim, hi_lim);
-      if (xn == x) break;  // at the search limit without a sign change
+    T xn = x;
+    bool newton = false;
+    const bool jump = pair.zero_force_split(xn) && xn != x && (!bracketed || (xn - a) * (xn - b) < T(0)) &&
+                      xn >= lo_lim && xn <= hi_lim;
+    if (!jump) {
+      const T slope = pair.slope();
+      const T xnewt = x - g / slope;
+      newton = newton_ok && slope > T(0) && xnewt == xnewt && (bracketed ? (xnewt - a) * (xnewt - b) < T(0) : true);
+      if (newton) {
+        xn = xnewt;
+      } else if (bracketed) {
+        xn = T(0.5) * (a + b);
+      } else {
+        // no slope to trust and no bracket yet: step outward, growing
+        const T dir = g > T(0) ? T(-1) : T(1);
+        last_step = T(2) * last_step;
+        xn = x + dir * last_step;
+      }
+      if (!bracketed) {
+        // before a sign change: within the search limits (a Newton step that does not halve |g|
+        // hands over to the growing outward steps)
+        last_step = math::max(last_step, math::fabs(xn - x));
+        xn = math::clamp(xn, lo_lim, hi_lim);
+        if (xn == x) break;  // at the search limit without a sign change
+      }
     }
     const T gn = pair(xn);
     ++n;
