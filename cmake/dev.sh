@@ -5,7 +5,8 @@
 #   bash cmake/dev.sh test [ctest options]                  builds and runs every test
 #   bash cmake/dev.sh bench [benchmark options]             runs the contact-kernel benchmarks
 # Environment: EPAC_BUILD_DIR (default build), EPAC_THREADS (default: all cores; sets
-# OMP_NUM_THREADS), EPAC_CMAKE_ARGS (extra configure arguments, e.g. -DKokkos_ROOT=...).
+# OMP_NUM_THREADS), EPAC_CMAKE_ARGS (extra configure arguments, e.g. -DKokkos_ROOT=...),
+# EPAC_LAMMPS (default on; off: `test` neither builds LAMMPS nor runs the plugin's tests).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cmd="${1:-}"; shift || true
@@ -14,9 +15,15 @@ threads="${EPAC_THREADS:-${OMP_NUM_THREADS:-$(nproc)}}"
 export OMP_NUM_THREADS="$threads" OMP_PROC_BIND="${OMP_PROC_BIND:-false}"
 
 bash "$root/cmake/install-deps.sh"
+lammps_args=()
+if [ "$cmd" = test ] && [ "${EPAC_LAMMPS:-on}" != off ]; then
+  # the LAMMPS plugin's tests (tests/lammps/) need LAMMPS itself: built once, cached
+  lammps=$(bash "$root/drivers/lammps/install-lammps.sh")
+  lammps_args=(-DEPAC_LAMMPS_EXECUTABLE="$(sed -n 1p <<<"$lammps")" -DEPAC_LAMMPS_SOURCE_DIR="$(sed -n 2p <<<"$lammps")")
+fi
 mkdir -p "$build"
 # shellcheck disable=SC2086
-cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release ${EPAC_CMAKE_ARGS:-} > "$build/epac-configure.log" 2>&1 \
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release "${lammps_args[@]}" ${EPAC_CMAKE_ARGS:-} > "$build/epac-configure.log" 2>&1 \
   || { cat "$build/epac-configure.log"; exit 1; }
 jobs=$(nproc)
 

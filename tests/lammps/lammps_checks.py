@@ -1,0 +1,226 @@
+#!/usr/bin/env python3
+"""Validation of the LAMMPS plugin (drivers/lammps/) inside LAMMPS itself (issue 8), run by ctest.
+
+  lammps_checks.py --lmp LMP --plugin epacplugin.so [--mpiexec MPIEXEC] --work DIR CHECK
+
+CHECK is one of
+  hm_vs_granular  epac/hertz_mindlin against LAMMPS's `granular hertz/material` on the same
+                  settled packing (4,000 spheres, ~11,000 contacts, in.settling_check): per-atom
+                  forces at steps 0 and 1 to round-off, positions and velocities after 1,000
+                  steps within 1e-8. Damping and friction are off in both: their conventions
+                  differ (drivers/lammps/README.md); the differences they make are printed.
+  ranks           1 against 2 MPI ranks: the same thermo output (12 printed digits) for
+                  epac/hertz_mindlin with damping and friction (newton on and off), and epac/mdr
+                  with plasticity, adhesion and damping, 1,000 steps of the 4,000-sphere settling.
+  restart         write_restart at step 500 and read_restart in a new process: the same thermo
+                  lines as the run continued in-process (which also starts a new `run`), and with
+                  no velocity-dependent force the same as one uninterrupted run; the deviations
+                  with damping and friction, and LAMMPS's own granular style, are printed.
+Each check prints what it compared and exits 1 on a failure.
+"""
+import argparse
+import math
+import os
+import re
+import shutil
+import subprocess
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+SCENE = os.path.join(HERE, "in.settling_check")
+RESUME = os.path.join(HERE, "in.settling_restart")
+# LAMMPS's own law with the same physics as `epac/hertz_mindlin E nu e mu` with e = 1, mu = 0:
+# Hertz with E* from E, nu (damping coefficient 0, no tangential force)
+GRANULAR_HM = "hertz/material 1e7 0 0.3 tangential linear_nohistory 0 0"
+EPAC_HM = "1e7 0.3 1 0"
+failures = []
+
+
+def check(ok, what):
+    print(("  ok   " if ok else "  FAIL ") + what)
+    if not ok:
+        failures.append(what)
+
+
+def lmp(args, ranks=1, variables=(), infile=SCENE, tag="run"):
+    """Runs LAMMPS in args.work; returns the thermo lines {step: [numbers]}."""
+    cmd = []
+    if ranks > 1 or args.mpiexec:
+        cmd = [args.mpiexec or "mpirun", "-np", str(ranks)]
+        if os.geteuid() == 0:
+            cmd += ["--allow-run-as-root"]
+        cmd += ["--oversubscribe"]
+    cmd += [args.lmp, "-var", "plugin", args.plugin, "-in", infile, "-log", tag + ".log", "-screen", "none"]
+    for k, v in variables:
+        cmd += ["-var", k, v]
+    env = dict(os.environ, OMP_NUM_THREADS="1", OMP_PROC_BIND="false")
+    r = subprocess.run(cmd, cwd=args.work, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    log = open(os.path.join(args.work, tag + ".log")).read() if os.path.exists(os.path.join(args.work, tag + ".log")) else ""
+    if r.returncode != 0 or "ERROR" in log:
+        print(" ".join(cmd))
+        print(r.stdout[-3000:])
+        print(log[-3000:])
+        raise SystemExit(f"LAMMPS failed ({tag})")
+    thermo = {}
+    for line in log.splitlines():
+        m = re.match(r"^\s*(\d+)\s+4000\s+(\S+)\s+(\S+)\s+(\S+)\s*$", line)
+        if m:
+            thermo.setdefault(int(m.group(1)), []).append(m.group(0).split()[2:])
+    return thermo
+
+
+def read_dump(path):
+    rows = {}
+    with open(path) as f:
+        lines = f.read().splitlines()
+    start = next(i for i, l in enumerate(lines) if l.startswith("ITEM: ATOMS")) + 1
+    for l in lines[start:]:
+        v = l.split()
+        rows[int(v[0])] = [float(x) for x in v[1:]]
+    return rows  # id -> x y z vx vy vz fx fy fz tqx tqy tqz
+
+
+def max_rel(a, b, cols, scale=None):
+    """max over atoms of |a - b| in columns cols, divided by scale (default: max |b| there)."""
+    diff = 0.0
+    big = 0.0
+    for i, ra in a.items():
+        rb = b[i]
+        diff = max(diff, max(abs(ra[c] - rb[c]) for c in cols))
+        big = max(big, max(abs(rb[c]) for c in cols))
+    return diff / (scale if scale else big), big
+
+
+def hm_vs_granular(args):
+    print("hm_vs_granular: epac/hertz_mindlin vs granular hertz/material, settled packing")
+    # the starting state: 1,000 steps of LAMMPS's own law from the lattice, written as a data file
+    lmp(args, variables=[("style", "granular"), ("coeffs", GRANULAR_HM), ("writedata", "settled")], tag="prepare")
+    steps = 1000
+    runs = {}
+    for name, style, coeffs in (("lammps", "granular", GRANULAR_HM), ("epac", "epac/hertz_mindlin", EPAC_HM)):
+        lmp(args, variables=[("style", style), ("coeffs", coeffs), ("data", "settled"), ("dump", name),
+                             ("steps", str(steps))], tag=name)
+        runs[name] = {s: read_dump(os.path.join(args.work, f"{name}.{s}.dump")) for s in (0, 1, steps)}
+    R = 1e-3
+    for s in (0, 1):
+        rel, big = max_rel(runs["epac"][s], runs["lammps"][s], (6, 7, 8))
+        # each atom's force is a sum of ~6 contact forces of up to ~1e3 x the resulting force
+        # (gravity-loaded packing): round-off is ~1e-16 x the largest contact force, well below 1e-12
+        check(rel < 1e-12, f"step {s}: max |F_epac - F_lammps| / max |F| = {rel:.2e} (max |F| {big:.3e} N) < 1e-12")
+    xr, _ = max_rel(runs["epac"][steps], runs["lammps"][steps], (0, 1, 2), scale=R)
+    vr, vbig = max_rel(runs["epac"][steps], runs["lammps"][steps], (3, 4, 5))
+    check(xr < 1e-8, f"step {steps}: max |x_epac - x_lammps| / R = {xr:.2e} < 1e-8")
+    check(vr < 1e-8, f"step {steps}: max |v_epac - v_lammps| / max |v| = {vr:.2e} (max |v| {vbig:.3e} m/s) < 1e-8")
+    # JKR (no damping, no friction): LAMMPS's `jkr` cohesion is a surface energy gamma with work of
+    # adhesion w = 2 gamma (pull-off 3 pi gamma R*), epac's Gamma is w (pull-off 1.5 pi Gamma R*):
+    # Gamma = 0.1 against cohesion 0.05. On the settled packing (no history: a pair is in contact
+    # iff it overlaps) the forces agree to round-off. Later steps are not compared: LAMMPS lets go
+    # at the overlap of force-controlled pull-off, -1.23 (R* gamma^2 / E*^2)^(1/3), epac at JKR's
+    # displacement-controlled critical overlap, -2.55 (same units) (README), and LAMMPS marks
+    # touching pairs in its setup pass, epac in the first step.
+    for name, style, coeffs in (("lammps_jkr", "granular", "jkr 1e7 0 0.3 0.05 tangential linear_nohistory 0 0"),
+                                ("epac_jkr", "epac/jkr", "1e7 0.3 1 0 0.1")):
+        lmp(args, variables=[("style", style), ("coeffs", coeffs), ("data", "settled"), ("dump", name),
+                             ("steps", "1")], tag=name)
+    rel, big = max_rel(read_dump(os.path.join(args.work, "epac_jkr.0.dump")),
+                       read_dump(os.path.join(args.work, "lammps_jkr.0.dump")), (6, 7, 8))
+    check(rel < 1e-12, f"JKR, step 0: max |F_epac - F_lammps| / max |F| = {rel:.2e} (max |F| {big:.3e} N) < 1e-12")
+    # Not asserted: what the unmatched damping and tangential conventions change (README)
+    for label, g, e in (("damping e = 0.5 (LAMMPS: damping coeff_restitution)",
+                         "hertz/material 1e7 0.5 0.3 tangential linear_nohistory 0 0 damping coeff_restitution",
+                         "1e7 0.3 0.5 0"),
+                        ("friction mu = 0.4 (LAMMPS: tangential mindlin)",
+                         "hertz/material 1e7 0 0.3 tangential mindlin NULL 0 0.4", "1e7 0.3 1 0.4")):
+        for name, style, coeffs in (("lammps_x", "granular", g), ("epac_x", "epac/hertz_mindlin", e)):
+            lmp(args, variables=[("style", style), ("coeffs", coeffs), ("data", "settled"), ("dump", name),
+                                 ("steps", str(steps))], tag=name)
+        a1 = read_dump(os.path.join(args.work, "epac_x.1.dump"))
+        b1 = read_dump(os.path.join(args.work, "lammps_x.1.dump"))
+        aN = read_dump(os.path.join(args.work, f"epac_x.{steps}.dump"))
+        bN = read_dump(os.path.join(args.work, f"lammps_x.{steps}.dump"))
+        f1, _ = max_rel(a1, b1, (6, 7, 8))
+        xN, _ = max_rel(aN, bN, (0, 1, 2), scale=R)
+        print(f"  info {label}: step 1 max |dF|/max|F| = {f1:.2e}, step {steps} max |dx|/R = {xN:.2e}")
+
+
+def thermo_equal(a, b, what):
+    steps = sorted(set(a) & set(b))
+    same = all(a[s] == b[s] for s in steps)
+    if not same:
+        for s in steps:
+            if a[s] != b[s]:
+                print(f"    step {s}: {a[s]} vs {b[s]}")
+    check(same and len(steps) > 0, f"{what}: thermo lines equal at steps {steps[0] if steps else '-'}..{steps[-1] if steps else '-'}")
+
+
+def ranks(args):
+    print("ranks: 1 against 2 MPI ranks, 4,000-sphere settling, 1,000 steps")
+    cases = (("epac/hertz_mindlin", "1e7 0.3 0.5 0.4", "on"),
+             ("epac/hertz_mindlin", "1e7 0.3 0.5 0.4", "off"),  # ghost pairs evaluated on both ranks
+             ("epac/mdr", "1e7 0.3 2e5 0.05 0 0.5", "on"))
+    for style, coeffs, newton in cases:
+        t = {}
+        for n in (1, 2):
+            t[n] = lmp(args, ranks=n, variables=[("style", style), ("coeffs", coeffs), ("newton", newton)],
+                       tag=f"ranks_{style.replace('/', '_')}_{newton}_{n}")
+        # kinetic energy to all 12 printed digits; pressure: the ghost contributions are summed in
+        # another order on 2 ranks (reverse communication), so its 12th digit may differ
+        ke_same = all(t[1][s][0][0:2] == t[2][s][0][0:2] for s in t[1])
+        check(ke_same, f"{style} ({coeffs}, newton {newton}): kinetic energy equal to 12 digits at every thermo step, 1 vs 2 ranks")
+        worst = max(abs(float(t[1][s][0][2]) - float(t[2][s][0][2])) / abs(float(t[1][s][0][2])) for s in t[1])
+        check(worst < 1e-10, f"{style} (newton {newton}): pressure within {worst:.1e} relative (< 1e-10), 1 vs 2 ranks")
+
+
+def restart(args):
+    print("restart: write_restart at step 500, read_restart in a new process, 1,000 steps")
+    cases = (("epac/hertz_mindlin", "1e7 0.3 1 0", True),     # no velocity-dependent force
+             ("epac/hertz_mindlin", "1e7 0.3 0.5 0.4", False),  # damping and friction
+             ("epac/mdr", "1e7 0.3 2e5 0.05 0 0.5", False),
+             ("granular", "hertz/material 1e7 0.5 0.3 tangential mindlin NULL 1.0 0.4 damping coeff_restitution", None))
+    for k, (style, coeffs, exact) in enumerate(cases):
+        base = [("style", style), ("coeffs", coeffs), ("restartfile", f"case{k}.restart")]
+        whole = lmp(args, variables=base, tag=f"whole{k}")
+        split = lmp(args, variables=base + [("split", "500")], tag=f"split{k}")
+        resumed = lmp(args, variables=[("restartfile", f"case{k}.restart"), ("split", "500")], infile=RESUME,
+                      tag=f"resumed{k}")
+        last = lambda t: {s: v[-1] for s, v in t.items() if s >= 500}
+        # the second `run` of the split input continues in-process: the reference for a restart
+        cont, res, unint = last(split), last(resumed), last(whole)
+        ke_dev = lambda a, b: max(abs(float(a[s][0]) - float(b[s][0])) / abs(float(b[s][0])) for s in a)
+        if exact is None:  # LAMMPS's own style, for comparison: printed, not asserted
+            print(f"  info {style} {coeffs}: resumed vs continued in-process {ke_dev(res, cont):.1e}, "
+                  f"vs uninterrupted {ke_dev(res, unint):.1e} (kinetic energy, relative)")
+            continue
+        thermo_equal({s: [v] for s, v in res.items()}, {s: [v] for s, v in cont.items()},
+                     f"{style} {coeffs}: resumed vs continued in-process")
+        if exact:
+            thermo_equal({s: [v] for s, v in res.items()}, {s: [v] for s, v in unint.items()},
+                         f"{style} {coeffs}: resumed vs uninterrupted")
+        else:
+            # Every `run` starts with a setup pass that evaluates velocity-dependent forces with the
+            # full-step v(n) instead of v(n - 1/2) (LAMMPS's semantics, the same in-process):
+            # a one-step perturbation that the collisional flow then amplifies. Printed only.
+            print(f"  info {style} {coeffs}: resumed vs uninterrupted kinetic energy {ke_dev(res, unint):.1e} (relative)")
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--lmp", required=True)
+    ap.add_argument("--plugin", required=True)
+    ap.add_argument("--mpiexec", default="")
+    ap.add_argument("--work", required=True)
+    ap.add_argument("check", choices=["hm_vs_granular", "ranks", "restart"])
+    args = ap.parse_args()
+    args.plugin = os.path.abspath(args.plugin)
+    if os.path.isdir(args.work):
+        shutil.rmtree(args.work)
+    os.makedirs(args.work)
+    globals()[args.check](args)
+    if failures:
+        print(f"{len(failures)} check(s) failed")
+        sys.exit(1)
+    print("all checks passed")
+
+
+if __name__ == "__main__":
+    main()
