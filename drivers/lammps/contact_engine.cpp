@@ -22,6 +22,25 @@ void bind_model(Model&, const Particles<double>&) {}
 template <class Eff>
 void bind_model(Mdr<double, Eff>& m, const Particles<double>& p) { m.bind(p); }
 
+// MDR growth hooks (no-ops for the other laws and for MDR compiled without growth)
+template <class Model>
+struct GrowthOf {
+  static constexpr bool enabled = false;
+  static Kokkos::View<double*, DefaultDevice> volume(Model&) { return {}; }
+  static void update(const Model&, int) {}
+  static double cap(const Model&) { return 1.0; }
+};
+template <class Eff>
+struct GrowthOf<Mdr<double, Eff>> {
+  static constexpr bool enabled = Eff::radius_growth;
+  static Kokkos::View<double*, DefaultDevice> volume(Mdr<double, Eff>& m) {
+    if constexpr (Eff::radius_growth) return m.growth.volume;
+    return {};
+  }
+  static void update(const Mdr<double, Eff>& m, int count) { m.update_radii(count); }
+  static double cap(const Mdr<double, Eff>& m) { return Eff::radius_growth ? double(m.growth.radius_cap) : 1.0; }
+};
+
 template <class Model>
 class EngineFor final : public ContactEngine {
  public:
@@ -58,6 +77,10 @@ class EngineFor final : public ContactEngine {
     const double pi = 3.14159265358979323846;
     return 2.0 * 0.75 * std::cbrt(pi * pi * w * w * R / (Es * Es));
   }
+  bool radius_growth() const override { return GrowthOf<Model>::enabled; }
+  Kokkos::View<double*, DefaultDevice> growth_volume() override { return GrowthOf<Model>::volume(model_); }
+  void update_radii(int count) override { GrowthOf<Model>::update(model_, count); }
+  double radius_cap() const override { return GrowthOf<Model>::cap(model_); }
 
  private:
   Model model_;
@@ -66,18 +89,19 @@ class EngineFor final : public ContactEngine {
   ForceSums<double, DefaultDevice> sums_;
 };
 
-template <template <class> class ModelOf, unsigned Supported, unsigned Bits = 0, class Create>
+// Instantiates ModelOf<Effects<Bits>> for every Bits within Supported that contains Required.
+template <template <class> class ModelOf, unsigned Supported, unsigned Required = 0u, unsigned Bits = 0, class Create>
 std::unique_ptr<ContactEngine> dispatch(unsigned want, const std::vector<Material>& mats, const Create& create) {
   if constexpr (Bits > kAllEffects) {
     throw std::logic_error("epac plugin: no compiled instance for effects " + std::to_string(want));
-  } else if constexpr ((Bits & ~Supported) != 0u) {
-    return dispatch<ModelOf, Supported, Bits + 1>(want, mats, create);
+  } else if constexpr ((Bits & ~Supported) != 0u || (Bits & Required) != Required) {
+    return dispatch<ModelOf, Supported, Required, Bits + 1>(want, mats, create);
   } else {
     if (want == Bits) {
       using Model = ModelOf<Effects<Bits>>;
       return std::make_unique<EngineFor<Model>>(create(static_cast<Model*>(nullptr)), mats);
     }
-    return dispatch<ModelOf, Supported, Bits + 1>(want, mats, create);
+    return dispatch<ModelOf, Supported, Required, Bits + 1>(want, mats, create);
   }
 }
 
@@ -100,8 +124,15 @@ unsigned effects_of(const std::vector<Material>& mats) {
 
 }  // namespace
 
-std::unique_ptr<ContactEngine> make_engine(Law law, const std::vector<Material>& mats) {
+std::unique_ptr<ContactEngine> make_engine(Law law, const std::vector<Material>& mats, bool radius_growth,
+                                           bool geometric_split) {
+  if (radius_growth && law != Law::mdr)
+    throw std::invalid_argument("epac plugin: radius growth is an MDR effect (fix epac/mdr needs pair_style epac/mdr)");
+  if (geometric_split && law != Law::mdr)
+    throw std::invalid_argument("epac plugin: pair_split is an MDR option");
   const unsigned e = effects_of(mats);
+  MdrOptions mdr_opt;
+  mdr_opt.pair_split = geometric_split ? MdrPairSplit::geometric : MdrPairSplit::balanced;
   switch (law) {
     case Law::hertz_mindlin:
       return dispatch<HM, kFriction | kDamping>(e & (kFriction | kDamping), mats,
@@ -114,9 +145,17 @@ std::unique_ptr<ContactEngine> make_engine(Law law, const std::vector<Material>&
       return dispatch<NAN22, kAdhesion | kPlasticity | kFriction | kDamping>(
           e, mats, [&](auto* m) { return std::remove_pointer_t<decltype(m)>::create(mats); });
     case Law::mdr:
-      // Radius growth needs per-atom state with ghost communication (a fix); not in this plugin yet.
+      // Radius growth (MDR (37)-(39)) only when fix epac/mdr keeps the per-atom R_o and V and
+      // communicates them; without it the instances are the ones without growth, as before.
+      // Growth is compiled only with plasticity: under the plastic_loading rule (mdr_radius_growth.hpp)
+      // only yielded sides grow R, so without a yield stress R stays R_o and the plain instance is
+      // exact (radius_growth() then reports false and the host skips the update).
+      if (radius_growth && (e & kPlasticity))
+        return dispatch<MDR, kAdhesion | kPlasticity | kFriction | kDamping | kRadiusGrowth,
+                        kPlasticity | kRadiusGrowth>(
+            e | kRadiusGrowth, mats, [&](auto* m) { return std::remove_pointer_t<decltype(m)>::create(mats, mdr_opt); });
       return dispatch<MDR, kAdhesion | kPlasticity | kFriction | kDamping>(
-          e, mats, [&](auto* m) { return std::remove_pointer_t<decltype(m)>::create(mats); });
+          e, mats, [&](auto* m) { return std::remove_pointer_t<decltype(m)>::create(mats, mdr_opt); });
   }
   throw std::logic_error("epac plugin: unknown law");
 }

@@ -33,11 +33,25 @@ class ContactEngine {
   // The largest separation at which the law still holds two spheres of radii Ri, Rj of
   // materials a, b together (0 without adhesion): the neighbour cutoff must reach it.
   virtual double critical_separation(int a, int b, double Ri, double Rj) const = 0;
+
+  // --- MDR radius growth, (37)-(39) (engines made with radius_growth; fix epac/mdr) ---
+  virtual bool radius_growth() const { return false; }
+  // The growth state's V view of (39), one entry per particles() slot (empty without growth): the
+  // host writes each atom's V here before compute() and reads it back after update_radii().
+  virtual Kokkos::View<double*, DefaultDevice> growth_volume() { return {}; }
+  // After compute(): applies the pass's growth sums to particles [0, count) (new radius and V)
+  // and clears the sums of every particle (count 0: the pass's sums are discarded).
+  virtual void update_radii(int /*count*/) {}
+  // R never exceeds this multiple of R_o (1 without growth).
+  virtual double radius_cap() const { return 1.0; }
 };
 
 // Throws epac::ParameterError (naming the coefficient, its value and the valid range) for
-// materials the law rejects.
-std::unique_ptr<ContactEngine> make_engine(Law law, const std::vector<Material>& materials);
+// materials the law rejects. radius_growth (MDR only, else std::invalid_argument) compiles the
+// law with epac::kRadiusGrowth. geometric_split (MDR only): MdrPairSplit::geometric, the authors'
+// flat placement (pair_style epac/mdr pair_split geometric).
+std::unique_ptr<ContactEngine> make_engine(Law law, const std::vector<Material>& materials,
+                                           bool radius_growth = false, bool geometric_split = false);
 
 }  // namespace lammps
 }  // namespace epac

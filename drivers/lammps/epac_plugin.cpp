@@ -1,4 +1,6 @@
-/* epacplugin.so: registers epac's contact laws with LAMMPS (`plugin load epacplugin.so`). */
+/* epacplugin.so: registers epac's contact laws with LAMMPS (`plugin load epacplugin.so`), and fix
+   epac/mdr (MDR radius growth for pair_style epac/mdr). */
+#include "fix_epac_mdr.h"
 #include "lammpsplugin.h"
 #include "pair_epac.h"
 #include "version.h"
@@ -15,6 +17,7 @@ template <> Pair *make_pair<Law::hertz_mindlin>(LAMMPS *lmp) { return new PairEp
 template <> Pair *make_pair<Law::jkr>(LAMMPS *lmp) { return new PairEpac(lmp, Law::jkr, "epac/jkr"); }
 template <> Pair *make_pair<Law::nan2022>(LAMMPS *lmp) { return new PairEpac(lmp, Law::nan2022, "epac/nan2022"); }
 template <> Pair *make_pair<Law::mdr>(LAMMPS *lmp) { return new PairEpac(lmp, Law::mdr, "epac/mdr"); }
+Fix *make_fix_mdr(LAMMPS *lmp, int narg, char **arg) { return new FixEpacMdr(lmp, narg, arg); }
 }  // namespace
 
 extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
@@ -38,4 +41,9 @@ extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
     plugin.creator.v1 = e.make;
     (*reg)(&plugin, lmp);
   }
+  plugin.style = "fix";
+  plugin.name = "epac/mdr";
+  plugin.info = "epac " EPAC_VERSION_STRING ": MDR radius growth (37)-(39) for pair_style epac/mdr";
+  plugin.creator.v2 = (lammpsplugin_factory2 *) &make_fix_mdr;
+  (*reg)(&plugin, lmp);
 }

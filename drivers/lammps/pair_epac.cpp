@@ -3,7 +3,10 @@
    (rebuilt by LAMMPS) into an epac contact list with the history rows of fix NEIGH_HISTORY, epac's
    kernel runs, and forces, torques and history go back. Conventions follow the GRANULAR styles
    (pair_granular.cpp): history is not advanced in setup passes, ghost forces are added only with
-   newton_pair on (reverse communication sums them), the cutoff reaches the adhesive range. */
+   newton_pair on (reverse communication sums them), the cutoff reaches the adhesive range.
+   With fix epac/mdr (epac/mdr only, newton off) the engine grows radii, MDR (37)-(39): R_o and V
+   come from the fix, each non-setup pass's growth is applied to local atoms and forwarded to ghosts
+   (grow_radii). */
 #include "pair_epac.h"
 
 #include "atom.h"
@@ -11,6 +14,7 @@
 #include "error.h"
 #include "fix.h"
 #include "fix_dummy.h"
+#include "fix_epac_mdr.h"
 #include "fix_neigh_history.h"
 #include "force.h"
 #include "memory.h"
@@ -80,9 +84,20 @@ void PairEpac::allocate()
   have_material_.assign(n, 0);
 }
 
-void PairEpac::settings(int narg, char **)
+// pair_style epac/<law> [pair_split balanced|geometric]: pair_split (epac/mdr only) places a pair's
+// rigid flat where the sides' scaled forces balance (default, passive) or at the authors' radical
+// plane (geometric; for comparisons with LAMMPS's granular mdr), epac::MdrPairSplit.
+void PairEpac::settings(int narg, char **arg)
 {
-  if (narg != 0) error->all(FLERR, "Illegal pair_style {} command: it takes no arguments", style_);
+  geometric_split_ = false;
+  for (int k = 0; k < narg; k += 2) {
+    if (std::strcmp(arg[k], "pair_split") != 0 || law_ != Law::mdr || k + 1 >= narg)
+      error->all(FLERR, "Illegal pair_style {} command: {} (valid: {})", style_, arg[k],
+                 law_ == Law::mdr ? "pair_split balanced|geometric" : "no arguments");
+    if (std::strcmp(arg[k + 1], "geometric") == 0) geometric_split_ = true;
+    else if (std::strcmp(arg[k + 1], "balanced") != 0)
+      error->all(FLERR, "pair_style {}: pair_split {} is not valid (valid: balanced, geometric)", style_, arg[k + 1]);
+  }
 }
 
 // Coefficients, per law (the order of LAMMPS's granular mdr where one exists):
@@ -179,14 +194,20 @@ void PairEpac::init_style()
   for (int t = 0; t < atom->ntypes; t++)
     if (!have_material_[t]) error->all(FLERR, "Pair {}: no pair_coeff {} {} (every type needs a material)", style_, t + 1, t + 1);
 
+  // fix epac/mdr asks for MDR radius growth (37)-(39); without it epac/mdr runs without growth
+  growth_fix_ = nullptr;
+  for (auto *f : modify->get_fix_by_style("^epac/mdr$")) growth_fix_ = dynamic_cast<FixEpacMdr *>(f);
+  if (growth_fix_ && law_ != Law::mdr)
+    error->all(FLERR, "fix epac/mdr (radius growth) needs pair_style epac/mdr, not {}", style_);
   try {
-    engine_ = epac::lammps::make_engine(law_, materials_);
+    engine_ = epac::lammps::make_engine(law_, materials_, growth_fix_ != nullptr, geometric_split_);
   } catch (std::exception &e) {
     error->all(FLERR, "pair {}: {}", style_, e.what());
   }
+  growth_ = engine_->radius_growth();
   if (fix_history_ && engine_->history_size() != history_size_)
-    error->all(FLERR, "pair {}: the coefficients changed the history size ({} -> {}) after the first run; "
-               "start a new pair_style", style_, history_size_, engine_->history_size());
+    error->all(FLERR, "pair {}: the coefficients or fix epac/mdr changed the history size ({} -> {}) after the "
+               "first run; start a new pair_style", style_, history_size_, engine_->history_size());
   history_size_ = engine_->history_size();
 
   neighbor->add_request(this, NeighConst::REQ_SIZE | NeighConst::REQ_HISTORY);
@@ -204,6 +225,22 @@ void PairEpac::init_style()
   for (int i = 0; i < atom->nlocal; i++) onerad_[type[i]] = MAX(onerad_[type[i]], radius[i]);
   MPI_Allreduce(&onerad_[1], &maxrad_[1], atom->ntypes, MPI_DOUBLE, MPI_MAX, world);
   last_list_ = nullptr;
+
+  // Growth: the size neighbour lists test radius_i + radius_j + skin with the radii of each
+  // rebuild, and init_one scales the cutoff (ghost shell, bins) by the radius cap, so grown
+  // partners are found at rebuilds. Between rebuilds LAMMPS's trigger sees displacements only:
+  // growth since the last rebuild must fit in the skin too, hence the warning.
+  if (growth_) {
+    double rmax = 0.0;
+    for (int t = 1; t <= atom->ntypes; t++) rmax = MAX(rmax, maxrad_[t]);
+    const double cap = engine_->radius_cap();
+    if (comm->me == 0 && neighbor->skin < (cap - 1.0) * rmax)
+      error->warning(FLERR, "pair {} with fix epac/mdr: neighbor skin {} is below (radius_cap - 1) * max radius "
+                     "= {} (radius_cap {}): radius growth between neighbour-list rebuilds is not part of "
+                     "LAMMPS's rebuild trigger, so contacts can be missed if radii grow by more than the skin "
+                     "left over by the displacements; use a larger skin or neigh_modify every 1 delay 0 "
+                     "with a margin", style_, neighbor->skin, (cap - 1.0) * rmax, cap);
+  }
 }
 
 double PairEpac::init_one(int i, int j)
@@ -212,6 +249,9 @@ double PairEpac::init_one(int i, int j)
   if (cut <= 0.0) {  // no atoms of these types yet: the largest cutoff of the others
     for (int k = 1; k <= atom->ntypes; k++) cut = MAX(cut, 2.0 * maxrad_[k]);
   }
+  // radius growth: radii reach radius_cap times their present value at most (R <= cap R_o, and
+  // R >= R_o), so ghosts and bins reach every grown partner
+  if (engine_ && growth_) cut *= engine_->radius_cap();
   if (engine_) cut += engine_->critical_separation(i - 1, j - 1, maxrad_[i], maxrad_[j]);
   return cut;
 }
@@ -230,6 +270,13 @@ void PairEpac::gather_atoms(int nall)
   auto gid = Kokkos::create_mirror_view(p.gid);
   double **ax = atom->x, **av = atom->v, **aw = atom->omega;
   double *radius = atom->radius, *rmass = atom->rmass;
+  // with growth, R_o is the fix's (the moment of inertia too: epac's convention (2/5) m R_o^2);
+  // without, R_o = R as before
+  double *ro = radius;
+  if (growth_) {
+    growth_fix_->initialize_new_atoms();
+    ro = growth_fix_->initial_radius();
+  }
   int *type = atom->type;
   tagint *tag = atom->tag;
   Kokkos::parallel_for("epac::lammps::gather", Kokkos::RangePolicy<Kokkos::DefaultHostExecutionSpace>(0, nall),
@@ -240,15 +287,41 @@ void PairEpac::gather_atoms(int nall)
                            w(i, d) = aw[i][d];
                          }
                          R(i) = radius[i];
-                         R0(i) = radius[i];
+                         R0(i) = ro[i];
                          m(i) = rmass[i];
-                         I(i) = 0.4 * rmass[i] * radius[i] * radius[i];
+                         I(i) = 0.4 * rmass[i] * ro[i] * ro[i];
                          mat(i) = type[i] - 1;
                          gid(i) = static_cast<std::int64_t>(tag[i]);
                        });
   Kokkos::deep_copy(p.x, x); Kokkos::deep_copy(p.v, v); Kokkos::deep_copy(p.omega, w);
   Kokkos::deep_copy(p.radius, R); Kokkos::deep_copy(p.radius0, R0); Kokkos::deep_copy(p.mass, m);
   Kokkos::deep_copy(p.inertia, I); Kokkos::deep_copy(p.material, mat); Kokkos::deep_copy(p.gid, gid);
+  if (growth_) {  // V of MDR (39), kept by the fix between passes
+    auto Vd = engine_->growth_volume();
+    auto V = Kokkos::create_mirror_view(Vd);
+    const double *av_ = growth_fix_->volume();
+    for (int i = 0; i < nall; i++) V(i) = av_[i];
+    Kokkos::deep_copy(Vd, V);
+  }
+}
+
+// MDR radius growth after a force pass: (37)-(39) applied to local atoms only (their sums are
+// complete with newton off; the ghosts' partial sums are cleared), then R and V of the local atoms
+// go back to LAMMPS and on to the ghosts. Setup passes discard their sums (no growth), as the
+// authors' fix_granular_mdr.cpp does.
+void PairEpac::grow_radii(int nlocal, bool advance)
+{
+  engine_->update_radii(advance ? nlocal : 0);
+  if (!advance) return;
+  auto &p = engine_->particles(0);
+  auto R = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.radius);
+  auto V = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), engine_->growth_volume());
+  double *radius = atom->radius, *av = growth_fix_->volume();
+  for (int i = 0; i < nlocal; i++) {
+    radius[i] = R(i);
+    av[i] = V(i);
+  }
+  comm->forward_comm(growth_fix_);
 }
 
 // The half list as an epac contact list, with the history slots of fix NEIGH_HISTORY; rebuilt
@@ -349,6 +422,7 @@ void PairEpac::compute(int eflag, int vflag)
     engine_->compute(contacts_, h, dt, {});
     add_forces(nlocal, newton);
   }
+  if (growth_) grow_radii(nlocal, advance);
   if (advance && history_size_ > 0) {
     auto hv = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), history_.data);
     Kokkos::parallel_for("epac::lammps::history_out", Kokkos::RangePolicy<Kokkos::DefaultHostExecutionSpace>(0, n),
@@ -394,6 +468,20 @@ void PairEpac::read_restart(FILE *fp)
     have_material_[i - 1] = v[6] != 0.0;
     for (int j = i; j <= atom->ntypes; j++) setflag[i][j] = have_material_[i - 1] && have_material_[j - 1];
   }
+}
+
+void PairEpac::write_restart_settings(FILE *fp)
+{
+  const int v = geometric_split_ ? 1 : 0;
+  fwrite(&v, sizeof(int), 1, fp);
+}
+
+void PairEpac::read_restart_settings(FILE *fp)
+{
+  int v = 0;
+  if (comm->me == 0) utils::sfread(FLERR, &v, sizeof(int), 1, fp, nullptr, error);
+  MPI_Bcast(&v, 1, MPI_INT, 0, world);
+  geometric_split_ = v != 0;
 }
 
 double PairEpac::memory_usage()

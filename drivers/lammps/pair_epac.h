@@ -14,6 +14,7 @@
 namespace LAMMPS_NS {
 
 class FixNeighHistory;
+class FixEpacMdr;
 
 class PairEpac : public Pair {
  public:
@@ -27,8 +28,8 @@ class PairEpac : public Pair {
   double init_one(int i, int j) override;
   void write_restart(FILE *fp) override;
   void read_restart(FILE *fp) override;
-  void write_restart_settings(FILE *) override {}
-  void read_restart_settings(FILE *) override {}
+  void write_restart_settings(FILE *fp) override;
+  void read_restart_settings(FILE *fp) override;
   // epac keeps every history field in the frame of the contact's smaller atom ID, so a row
   // moves between the two atoms' lists unchanged (LAMMPS's default negates it).
   void transfer_history(double *source, double *target, int, int) override;
@@ -37,6 +38,7 @@ class PairEpac : public Pair {
  protected:
   void allocate();
   void gather_atoms(int nall);
+  void grow_radii(int nlocal, bool advance);
   void build_contacts();
   void add_forces(int nlocal, bool with_ghosts);
   int coefficient_count() const;
@@ -49,8 +51,12 @@ class PairEpac : public Pair {
   std::unique_ptr<epac::lammps::ContactEngine> engine_;
   FixNeighHistory *fix_history_ = nullptr;
   int history_size_ = 0;
+  bool geometric_split_ = false;  // pair_style epac/mdr pair_split geometric
   bool history_fix_made_ = false;
   double *onerad_ = nullptr, *maxrad_ = nullptr;  // per type: largest radius (local, global)
+  // fix epac/mdr (MDR radius growth, epac/mdr only): its R_o and V feed the engine; null without it
+  FixEpacMdr *growth_fix_ = nullptr;
+  bool growth_ = false;  // the engine grows radii (fix present and the law can yield)
 
   // the contact list of the current neighbour list: pair k is (i, j) = (first, second) and its
   // history row lives at LAMMPS's fix NEIGH_HISTORY slot hist_[k] with touch flag touch_[k]

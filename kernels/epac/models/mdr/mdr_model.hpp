@@ -92,6 +92,7 @@ struct Mdr {
   Kokkos::View<MdrPairConstants<T>*, Device> pairs;  // per material pair, mat_i * nmat + mat_j
   int nmat = 0;
   T xi = T(1);
+  bool geometric_split = false;  // MdrOptions::pair_split == geometric (the authors' flat)
   MdrGrowthState<T, Device> growth;  // bound by bind() when Eff::radius_growth
   // Deterministic mode: the growth terms (columns of growth.sums) per contact side, enabled by
   // begin_deterministic_pass; side 0 of a pair is the particle with the smaller global id.
@@ -235,7 +236,11 @@ struct Mdr {
         const T delta_last = row(2);
         if (delta_last != T(0)) guess = row(1) + row(3) * (g.delta - delta_last);
       }
-      const T d0 = mdr_balance_split(ps, g.delta, guess, Rs[0] + Rs[1]);
+      T d0 = dside[0];
+      if (geometric_split)
+        ps(d0);  // MdrPairSplit::geometric: the sides at the geometric split itself (one evaluation)
+      else
+        d0 = mdr_balance_split(ps, g.delta, guess, Rs[0] + Rs[1]);
       for (int s = 0; s < 2; ++s) {
         dside[s] = ps.d[s];
         st[s] = ps.st[s];
@@ -397,6 +402,7 @@ struct Mdr {
     Mdr m;
     m.nmat = static_cast<int>(materials.size());
     m.xi = T(opt.xi);
+    m.geometric_split = opt.pair_split == MdrPairSplit::geometric;
     m.sides = Kokkos::View<MdrSideConstants<T>*, Device>("mdr.sides", m.nmat);
     m.pairs = Kokkos::View<MdrPairConstants<T>*, Device>("mdr.pairs", m.nmat * m.nmat);
     auto hs = Kokkos::create_mirror_view(m.sides);
@@ -426,8 +432,10 @@ struct Mdr {
 
   // Applies the growth sums of the last force pass: new R and V per particle, sums reset (the
   // per-thread copies of the pass are added first and cleared after: mdr_radius_growth.hpp).
-  void update_radii() const {
-    if (Eff::radius_growth && growth.bound()) mdr_update_radii(growth);
+  // count >= 0 updates only particles [0, count) and clears every particle's sums (count 0
+  // discards the pass's sums); default: all.
+  void update_radii(int count = -1) const {
+    if (Eff::radius_growth && growth.bound()) mdr_update_radii(growth, count);
   }
 
   // Deterministic mode (compute/deterministic_pass.hpp calls these): before the pass's kernels,

@@ -39,11 +39,24 @@ enum class MdrYieldOnset {
   hertz_40
 };
 
+// Where a pair's rigid flat sits (mdr_pair_balance.hpp, mdr_pair_split.hpp).
+enum class MdrPairSplit {
+  // Default. The flat where the sides' scaled forces balance, lambda_0 F_0 = lambda_1 F_1: the
+  // pair is passive (issue 10).
+  balanced,
+  // The authors' choice: the radical plane while loading (epac's repaired interpolation towards the
+  // residuals below the largest overlap), with the mean of the two side forces. Not work-conjugate:
+  // yielded pairs of unequal spheres returned more work than they took on ~1% of random cycles.
+  // For comparisons with the authors' implementation (LAMMPS `granular mdr`).
+  geometric
+};
+
 struct MdrOptions {
   // xi of MDR (15): 1 = displacement control (Appendix E's choice), 3 = force control.
   int xi = 1;
   MdrGrowthRule growth_rule = MdrGrowthRule::plastic_loading;
   MdrYieldOnset yield_onset = MdrYieldOnset::elastic_law;
+  MdrPairSplit pair_split = MdrPairSplit::balanced;
   // R never exceeds radius_cap * R_o (the authors' implementation stops growth at 1.5 R_o).
   double radius_cap = 1.5;
   // Guard of the denominator of MDR (37), D = 2 pi R sum(delta_o + R - R_o) - 4 pi R^2, which is

@@ -121,20 +121,26 @@ KOKKOS_FORCEINLINE_FUNCTION void mdr_growth_add_side(const MdrGrowthState<T, Dev
 
 // Per-particle kernel: applies (37) and (39), resets the sums. R never decreases.
 // The sums are taken (target + per-thread copies, then cleared) inside this one kernel.
+// count >= 0: only particles [0, count) are updated (a host whose particles past count are
+// copies owned elsewhere, e.g. LAMMPS's ghost atoms, whose sums are partial); the sums of every
+// particle are still cleared, so partial sums never carry over into the next pass. count 0
+// discards the pass's sums. Default (-1): every particle.
 template <class T, class Device>
-void mdr_update_radii(const MdrGrowthState<T, Device>& gs) {
+void mdr_update_radii(const MdrGrowthState<T, Device>& gs, int count = -1) {
   const int n = static_cast<int>(gs.volume.extent(0));
+  const int updated = (count < 0 || count > n) ? n : count;
   MdrGrowthState<T, Device> s = gs;  // shallow: shares the views and the copies
   const auto sums = s.sums.scatter;
   Kokkos::parallel_for(
       "epac::mdr_update_radii", Kokkos::RangePolicy<typename Device::execution_space>(0, n),
       KOKKOS_LAMBDA(int p) {
         const T pi = constants<T>::pi;
-        const T R = s.radius(p), R0 = s.radius0(p);
-        const T V0 = T(4) / T(3) * pi * R0 * R0 * R0;
         const T eps_sum = sums.take(p, MdrGrowthState<T, Device>::kEps);
         T num = sums.take(p, MdrGrowthState<T, Device>::kNumerator);
         const T den = sums.take(p, MdrGrowthState<T, Device>::kDenominator);
+        if (p >= updated) return;  // sums cleared, R and V left as they are
+        const T R = s.radius(p), R0 = s.radius0(p);
+        const T V0 = T(4) / T(3) * pi * R0 * R0 * R0;
         T factor = T(1) + eps_sum;  // (39)
         if (factor < s.volume_floor) {
           factor = s.volume_floor;
