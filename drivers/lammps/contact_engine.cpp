@@ -125,14 +125,14 @@ unsigned effects_of(const std::vector<Material>& mats) {
 }  // namespace
 
 std::unique_ptr<ContactEngine> make_engine(Law law, const std::vector<Material>& mats, bool radius_growth,
-                                           bool geometric_split) {
+                                           int pair_split) {
   if (radius_growth && law != Law::mdr)
     throw std::invalid_argument("epac plugin: radius growth is an MDR effect (fix epac/mdr needs pair_style epac/mdr)");
-  if (geometric_split && law != Law::mdr)
+  if (pair_split != 0 && law != Law::mdr)
     throw std::invalid_argument("epac plugin: pair_split is an MDR option");
   const unsigned e = effects_of(mats);
   MdrOptions mdr_opt;
-  mdr_opt.pair_split = geometric_split ? MdrPairSplit::geometric : MdrPairSplit::balanced;
+  mdr_opt.pair_split = static_cast<MdrPairSplit>(pair_split);
   switch (law) {
     case Law::hertz_mindlin:
       return dispatch<HM, kFriction | kDamping>(e & (kFriction | kDamping), mats,

@@ -48,10 +48,10 @@ class ContactEngine {
 
 // Throws epac::ParameterError (naming the coefficient, its value and the valid range) for
 // materials the law rejects. radius_growth (MDR only, else std::invalid_argument) compiles the
-// law with epac::kRadiusGrowth. geometric_split (MDR only): MdrPairSplit::geometric, the authors'
-// flat placement (pair_style epac/mdr pair_split geometric).
+// law with epac::kRadiusGrowth. pair_split (MDR only): an epac::MdrPairSplit value, where a pair's
+// flat sits (pair_style epac/mdr pair_split balanced|geometric).
 std::unique_ptr<ContactEngine> make_engine(Law law, const std::vector<Material>& materials,
-                                           bool radius_growth = false, bool geometric_split = false);
+                                           bool radius_growth = false, int pair_split = 0);
 
 }  // namespace lammps
 }  // namespace epac

@@ -84,19 +84,24 @@ void PairEpac::allocate()
   have_material_.assign(n, 0);
 }
 
-// pair_style epac/<law> [pair_split balanced|geometric]: pair_split (epac/mdr only) places a pair's
-// rigid flat where the sides' scaled forces balance (default, passive) or at the authors' radical
-// plane (geometric; for comparisons with LAMMPS's granular mdr), epac::MdrPairSplit.
+// pair_style epac/<law> [pair_split balanced|geometric]: pair_split (epac/mdr only) places a
+// pair's rigid flat where the sides' scaled forces balance (default, passive) or at the authors'
+// radical plane (geometric; not passive; for comparisons with LAMMPS's granular mdr),
+// epac::MdrPairSplit.
 void PairEpac::settings(int narg, char **arg)
 {
-  geometric_split_ = false;
+  pair_split_ = 0;
   for (int k = 0; k < narg; k += 2) {
     if (std::strcmp(arg[k], "pair_split") != 0 || law_ != Law::mdr || k + 1 >= narg)
       error->all(FLERR, "Illegal pair_style {} command: {} (valid: {})", style_, arg[k],
                  law_ == Law::mdr ? "pair_split balanced|geometric" : "no arguments");
-    if (std::strcmp(arg[k + 1], "geometric") == 0) geometric_split_ = true;
-    else if (std::strcmp(arg[k + 1], "balanced") != 0)
-      error->all(FLERR, "pair_style {}: pair_split {} is not valid (valid: balanced, geometric)", style_, arg[k + 1]);
+    const char *names[] = {"balanced", "geometric"};  // epac::MdrPairSplit order
+    pair_split_ = -1;
+    for (int q = 0; q < 2; q++)
+      if (std::strcmp(arg[k + 1], names[q]) == 0) pair_split_ = q;
+    if (pair_split_ < 0)
+      error->all(FLERR, "pair_style {}: pair_split {} is not valid (valid: balanced, geometric)",
+                 style_, arg[k + 1]);
   }
 }
 
@@ -200,7 +205,7 @@ void PairEpac::init_style()
   if (growth_fix_ && law_ != Law::mdr)
     error->all(FLERR, "fix epac/mdr (radius growth) needs pair_style epac/mdr, not {}", style_);
   try {
-    engine_ = epac::lammps::make_engine(law_, materials_, growth_fix_ != nullptr, geometric_split_);
+    engine_ = epac::lammps::make_engine(law_, materials_, growth_fix_ != nullptr, pair_split_);
   } catch (std::exception &e) {
     error->all(FLERR, "pair {}: {}", style_, e.what());
   }
@@ -472,7 +477,7 @@ void PairEpac::read_restart(FILE *fp)
 
 void PairEpac::write_restart_settings(FILE *fp)
 {
-  const int v = geometric_split_ ? 1 : 0;
+  const int v = pair_split_;
   fwrite(&v, sizeof(int), 1, fp);
 }
 
@@ -481,7 +486,7 @@ void PairEpac::read_restart_settings(FILE *fp)
   int v = 0;
   if (comm->me == 0) utils::sfread(FLERR, &v, sizeof(int), 1, fp, nullptr, error);
   MPI_Bcast(&v, 1, MPI_INT, 0, world);
-  geometric_split_ = v != 0;
+  pair_split_ = v;
 }
 
 double PairEpac::memory_usage()

@@ -51,7 +51,7 @@ class PairEpac : public Pair {
   std::unique_ptr<epac::lammps::ContactEngine> engine_;
   FixNeighHistory *fix_history_ = nullptr;
   int history_size_ = 0;
-  bool geometric_split_ = false;  // pair_style epac/mdr pair_split geometric
+  int pair_split_ = 0;  // pair_style epac/mdr pair_split: epac::MdrPairSplit
   bool history_fix_made_ = false;
   double *onerad_ = nullptr, *maxrad_ = nullptr;  // per type: largest radius (local, global)
   // fix epac/mdr (MDR radius growth, epac/mdr only): its R_o and V feed the engine; null without it
