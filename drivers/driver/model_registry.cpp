@@ -19,6 +19,7 @@ const std::vector<ModelEntry>& model_registry() {
         choice_key("growth_rule", {"plastic_loading", "all_contacts"}, 0),
         choice_key("yield_onset", {"elastic_law", "hertz_40"}, 0),
         choice_key("pair_split", {"balanced", "geometric"}, 0),
+        choice_key("delta_max", {"paper_19", "running_max"}, 0),
         {"radius_cap", 1.0, Bound::closed, 10.0, Bound::closed, true, 1.5},         // R <= cap R_o
         {"denominator_floor", 0.0, Bound::open, 1.0, Bound::open, true, 0.05},     // guard of (37)
         {"volume_floor", 0.0, Bound::open, 1.0, Bound::open, true, 0.1}},          // V >= floor V_o

@@ -125,14 +125,15 @@ unsigned effects_of(const std::vector<Material>& mats) {
 }  // namespace
 
 std::unique_ptr<ContactEngine> make_engine(Law law, const std::vector<Material>& mats, bool radius_growth,
-                                           int pair_split) {
+                                           int pair_split, int delta_max) {
   if (radius_growth && law != Law::mdr)
     throw std::invalid_argument("epac plugin: radius growth is an MDR effect (fix epac/mdr needs pair_style epac/mdr)");
-  if (pair_split != 0 && law != Law::mdr)
-    throw std::invalid_argument("epac plugin: pair_split is an MDR option");
+  if ((pair_split != 0 || delta_max != 0) && law != Law::mdr)
+    throw std::invalid_argument("epac plugin: pair_split and delta_max are MDR options");
   const unsigned e = effects_of(mats);
   MdrOptions mdr_opt;
   mdr_opt.pair_split = static_cast<MdrPairSplit>(pair_split);
+  mdr_opt.delta_max = static_cast<MdrDeltaMax>(delta_max);
   switch (law) {
     case Law::hertz_mindlin:
       return dispatch<HM, kFriction | kDamping>(e & (kFriction | kDamping), mats,

@@ -48,10 +48,11 @@ class ContactEngine {
 
 // Throws epac::ParameterError (naming the coefficient, its value and the valid range) for
 // materials the law rejects. radius_growth (MDR only, else std::invalid_argument) compiles the
-// law with epac::kRadiusGrowth. pair_split (MDR only): an epac::MdrPairSplit value, where a pair's
-// flat sits (pair_style epac/mdr pair_split balanced|geometric).
+// law with epac::kRadiusGrowth. MDR only: pair_split, an epac::MdrPairSplit value (where a pair's
+// flat sits), and delta_max, an epac::MdrDeltaMax value (pair_style epac/mdr pair_split ...
+// delta_max ...).
 std::unique_ptr<ContactEngine> make_engine(Law law, const std::vector<Material>& materials,
-                                           bool radius_growth = false, int pair_split = 0);
+                                           bool radius_growth = false, int pair_split = 0, int delta_max = 0);
 
 }  // namespace lammps
 }  // namespace epac

@@ -84,24 +84,35 @@ void PairEpac::allocate()
   have_material_.assign(n, 0);
 }
 
-// pair_style epac/<law> [pair_split balanced|geometric]: pair_split (epac/mdr only) places a
-// pair's rigid flat where the sides' scaled forces balance (default, passive) or at the authors'
-// radical plane (geometric; not passive; for comparisons with LAMMPS's granular mdr),
-// epac::MdrPairSplit.
+// pair_style epac/<law> [pair_split balanced|geometric] [delta_max paper_19|running_max]
+// (epac/mdr only): pair_split places a pair's rigid flat where the sides' scaled forces balance
+// (default, passive) or at the authors' radical plane (geometric; not passive), epac::MdrPairSplit;
+// delta_max is MDR (19) (default) or the running maximum of the apparent overlap (the authors'
+// code), epac::MdrDeltaMax. Both set to the authors' choices for comparisons with granular mdr.
 void PairEpac::settings(int narg, char **arg)
 {
   pair_split_ = 0;
+  delta_max_ = 0;
+  struct Keyword { const char *name; int *value; std::vector<const char *> choices; };
+  const Keyword keys[] = {{"pair_split", &pair_split_, {"balanced", "geometric"}},
+                          {"delta_max", &delta_max_, {"paper_19", "running_max"}}};
   for (int k = 0; k < narg; k += 2) {
-    if (std::strcmp(arg[k], "pair_split") != 0 || law_ != Law::mdr || k + 1 >= narg)
+    const Keyword *key = nullptr;
+    for (const auto &kw : keys)
+      if (std::strcmp(arg[k], kw.name) == 0) key = &kw;
+    if (!key || law_ != Law::mdr || k + 1 >= narg)
       error->all(FLERR, "Illegal pair_style {} command: {} (valid: {})", style_, arg[k],
-                 law_ == Law::mdr ? "pair_split balanced|geometric" : "no arguments");
-    const char *names[] = {"balanced", "geometric"};  // epac::MdrPairSplit order
-    pair_split_ = -1;
-    for (int q = 0; q < 2; q++)
-      if (std::strcmp(arg[k + 1], names[q]) == 0) pair_split_ = q;
-    if (pair_split_ < 0)
-      error->all(FLERR, "pair_style {}: pair_split {} is not valid (valid: balanced, geometric)",
-                 style_, arg[k + 1]);
+                 law_ == Law::mdr ? "pair_split balanced|geometric, delta_max paper_19|running_max"
+                                  : "no arguments");
+    int found = -1;
+    for (std::size_t q = 0; q < key->choices.size(); q++)
+      if (std::strcmp(arg[k + 1], key->choices[q]) == 0) found = static_cast<int>(q);
+    if (found < 0) {
+      std::string valid;
+      for (const char *c : key->choices) valid += (valid.empty() ? "" : ", ") + std::string(c);
+      error->all(FLERR, "pair_style {}: {} {} is not valid (valid: {})", style_, key->name, arg[k + 1], valid);
+    }
+    *key->value = found;
   }
 }
 
@@ -205,7 +216,7 @@ void PairEpac::init_style()
   if (growth_fix_ && law_ != Law::mdr)
     error->all(FLERR, "fix epac/mdr (radius growth) needs pair_style epac/mdr, not {}", style_);
   try {
-    engine_ = epac::lammps::make_engine(law_, materials_, growth_fix_ != nullptr, pair_split_);
+    engine_ = epac::lammps::make_engine(law_, materials_, growth_fix_ != nullptr, pair_split_, delta_max_);
   } catch (std::exception &e) {
     error->all(FLERR, "pair {}: {}", style_, e.what());
   }
@@ -477,16 +488,17 @@ void PairEpac::read_restart(FILE *fp)
 
 void PairEpac::write_restart_settings(FILE *fp)
 {
-  const int v = pair_split_;
-  fwrite(&v, sizeof(int), 1, fp);
+  const int v[2] = {pair_split_, delta_max_};
+  fwrite(v, sizeof(int), 2, fp);
 }
 
 void PairEpac::read_restart_settings(FILE *fp)
 {
-  int v = 0;
-  if (comm->me == 0) utils::sfread(FLERR, &v, sizeof(int), 1, fp, nullptr, error);
-  MPI_Bcast(&v, 1, MPI_INT, 0, world);
-  pair_split_ = v;
+  int v[2] = {0, 0};
+  if (comm->me == 0) utils::sfread(FLERR, v, sizeof(int), 2, fp, nullptr, error);
+  MPI_Bcast(v, 2, MPI_INT, 0, world);
+  pair_split_ = v[0];
+  delta_max_ = v[1];
 }
 
 double PairEpac::memory_usage()

@@ -52,6 +52,7 @@ class PairEpac : public Pair {
   FixNeighHistory *fix_history_ = nullptr;
   int history_size_ = 0;
   int pair_split_ = 0;  // pair_style epac/mdr pair_split: epac::MdrPairSplit
+  int delta_max_ = 0;   // pair_style epac/mdr delta_max: epac::MdrDeltaMax
   bool history_fix_made_ = false;
   double *onerad_ = nullptr, *maxrad_ = nullptr;  // per type: largest radius (local, global)
   // fix epac/mdr (MDR radius growth, epac/mdr only): its R_o and V feed the engine; null without it

@@ -83,6 +83,11 @@ def main():
     ap.add_argument("--equal-radii", action="store_true")
     ap.add_argument("--pair-split", choices=["balanced", "geometric"], default="balanced",
                     help="epac's pair flat: balanced (default) or geometric (the authors' radical plane)")
+    ap.add_argument("--delta-max", choices=["paper_19", "running_max"], default="paper_19",
+                    help="epac's delta_max with growth: MDR (19) (default) or running_max (the authors' code)")
+    ap.add_argument("--authors", action="store_true",
+                    help="epac's documented conventions set to the authors' choices: pair_split geometric, "
+                         "delta_max running_max")
     ap.add_argument("--onerun", type=int, default=0,
                     help="1: compression and hold in one run (no setup pass between; see in.mdr_compaction)")
     ap.add_argument("--ranks", type=int, default=1)
@@ -101,11 +106,12 @@ def main():
     lmp_coeffs = f"mdr {args.E} {args.nu} {args.Y} 0 0 {args.CoR} tangential linear_nohistory 0 0 damping none"
     epac_coeffs = f"{args.E} {args.nu} {args.Y} 0 0 {args.CoR}"
     plug = ["-var", "plugin", args.plugin]
-    epac_style = "epac/mdr" + (" pair_split geometric" if args.pair_split == "geometric" else "")
+    if args.authors:
+        args.pair_split, args.delta_max = "geometric", "running_max"
+    epac_style = f"epac/mdr pair_split {args.pair_split} delta_max {args.delta_max}"
     failed = False
     print(f"scene: ncell {args.ncell} ({4 * args.ncell ** 3} atoms), strain {args.strain} in {args.nsteps} steps, "
-          f"hold {args.nhold}; E {args.E} nu {args.nu} Y {args.Y} CoR {args.CoR}; epac pair_split "
-          f"{args.pair_split}; files in {workdir}")
+          f"hold {args.nhold}; E {args.E} nu {args.nu} Y {args.Y} CoR {args.CoR}; {epac_style}; files in {workdir}")
     cases = [("", [])]
     if args.equal_radii:
         cases.append(("_equal", ["-var", "polyd", "0"]))

@@ -6,11 +6,11 @@ to 0.1 R1, reload to 0.4 R1, unload to a gap) and records the pair force every 1
 ratios R2/R1 = 1, 2, 5, plastic (E/Y = 200) and elastic (Y = 1e12 Pa), both with radius growth,
 no damping (CoR 1), no friction, no adhesion, psi_b 0, it compares epac's force with LAMMPS's at the
 same steps: max |F_epac - F_lammps| / peak |F_lammps|.
-  - pair_split geometric (the authors' radical plane, epac's documented choice for comparisons):
-    every case within 1% (asserted);
-  - the default balanced split: elastic cases and equal radii within 1% (asserted); plastic
-    unequal pairs printed (the balance departs from the radical plane at first order once the
-    sides yield: README "MDR conventions").
+  - epac's documented conventions set to the authors' choices (pair_style epac/mdr pair_split
+    geometric delta_max running_max): every case within 1% (asserted);
+  - epac's defaults (balanced split, delta_max by (19)): elastic cases and equal radii within 1%
+    (asserted); plastic unequal pairs printed (the balance departs from the radical plane at
+    first order once the sides yield: README "MDR conventions").
   python3 tests/lammps/compare_mdr_pair.py --lmp LMP --plugin epacplugin.so [--workdir DIR]
 """
 import argparse
@@ -52,7 +52,7 @@ def main():
     os.makedirs(workdir, exist_ok=True)
     plugin = os.path.abspath(args.plugin)
     failed = False
-    print("| E/Y | R2/R1 | peak F [N] | geometric | balanced | F_balanced / F_lammps at 0.4 R1 |")
+    print("| E/Y | R2/R1 | peak F [N] | authors' choices | epac's defaults | F_default / F_lammps at 0.4 R1 |")
     print("|---|---|---|---|---|---|")
     for Y in ("5e6", "1e12"):
         for R2 in ("1.0e-3", "2.0e-3", "5.0e-3"):
@@ -62,9 +62,10 @@ def main():
                       base + [("pcoeffs", f"mdr 1e9 0.3 {Y} 0 0 1 tangential linear_nohistory 0 0 damping none")])
             peak = max(abs(v[1]) for v in ref.values())
             res = {}
-            for split in ("geometric", "balanced"):
+            for split, style in (("geometric", "epac/mdr pair_split geometric delta_max running_max"),
+                                 ("balanced", "epac/mdr")):
                 e = run(args, workdir, f"epac_{split}_{tag}",
-                        base + [("plugin", plugin), ("pstyle", f"epac/mdr pair_split {split}"),
+                        base + [("plugin", plugin), ("pstyle", style),
                                 ("pcoeffs", f"1e9 0.3 {Y} 0 0 1"), ("grow", "1")])
                 steps = sorted(set(ref) & set(e))
                 res[split] = (max(abs(e[s][1] - ref[s][1]) for s in steps) / peak, e)

@@ -93,6 +93,7 @@ struct Mdr {
   int nmat = 0;
   T xi = T(1);
   bool geometric_split = false;  // MdrOptions::pair_split == geometric (the authors' flat)
+  T growth_in_max = T(1);        // MdrOptions::delta_max: 1 paper_19, 0 running_max
   MdrGrowthState<T, Device> growth;  // bound by bind() when Eff::radius_growth
   // Deterministic mode: the growth terms (columns of growth.sums) per contact side, enabled by
   // begin_deterministic_pass; side 0 of a pair is the particle with the smaller global id.
@@ -193,7 +194,8 @@ struct Mdr {
     T dside[2] = {g.delta, T(0)};
     if (is_pair) {
       // largest total overlap by (19): running maximum of the total delta_o, plus both growths
-      const T shift = growth_of[0] + growth_of[1];
+      // (MdrDeltaMax::running_max: of the total delta itself, the authors' code)
+      const T shift = growth_in_max * (growth_of[0] + growth_of[1]);
       T dmax = g.delta;
       if (Eff::plasticity) {
         const T old = row(0);
@@ -416,6 +418,14 @@ struct Mdr {
         hp(a * m.nmat + b) = (materials[a].rigid && materials[b].rigid)
                                  ? MdrPairConstants<T>{}
                                  : mdr_pair_constants<T>(materials[a], materials[b], opt.yield_onset);
+    // MdrOptions::delta_max into every copy of the side constants
+    const T gim = opt.delta_max == MdrDeltaMax::running_max ? T(0) : T(1);
+    m.growth_in_max = gim;
+    for (int a = 0; a < m.nmat; ++a) hs(a).growth_in_max = gim;
+    for (int q = 0; q < m.nmat * m.nmat; ++q) {
+      hp(q).side_a.growth_in_max = gim;
+      hp(q).side_b.growth_in_max = gim;
+    }
     Kokkos::deep_copy(m.sides, hs);
     Kokkos::deep_copy(m.pairs, hp);
     m.growth.rule = opt.growth_rule;

@@ -51,12 +51,24 @@ enum class MdrPairSplit {
   geometric
 };
 
+// What delta_max is once the radius grows (MdrOptions::delta_max).
+enum class MdrDeltaMax {
+  // Default. MDR (19): delta_max = delta_o,max + R - R_o, delta_o,max the running maximum of
+  // delta_o = delta - (R - R_o). Growth itself never counts as loading; converges with the step.
+  paper_19,
+  // The authors' code (Appendix E): the running maximum of the apparent overlap delta, so a side
+  // whose overlap rises because R grew is loading (plastic loading, more growth). For comparisons
+  // with LAMMPS's `granular mdr`. Identical without growth.
+  running_max
+};
+
 struct MdrOptions {
   // xi of MDR (15): 1 = displacement control (Appendix E's choice), 3 = force control.
   int xi = 1;
   MdrGrowthRule growth_rule = MdrGrowthRule::plastic_loading;
   MdrYieldOnset yield_onset = MdrYieldOnset::elastic_law;
   MdrPairSplit pair_split = MdrPairSplit::balanced;
+  MdrDeltaMax delta_max = MdrDeltaMax::paper_19;
   // R never exceeds radius_cap * R_o (the authors' implementation stops growth at 1.5 R_o).
   double radius_cap = 1.5;
   // Guard of the denominator of MDR (37), D = 2 pi R sum(delta_o + R - R_o) - 4 pi R^2, which is
@@ -91,6 +103,8 @@ struct MdrSideConstants {
   T cA_over_R2;    // c_A / R^2 = pi (x_y^2 - x_y) at the switch, MDR (43); 0 if never yields
   T r_rho, r_z;    // E_eff (nu-1)/(2G) and E_eff/(4G): delta_R/(A/2) of MDR (34), see mdr_plastic_shape
   T inv_3kappa;    // 1 / (3 kappa), MDR (38)
+  // 1: delta_max by MDR (19) (growth shifts it); 0: the running maximum of delta (MdrDeltaMax)
+  T growth_in_max = T(1);
 };
 
 // Fills the precomputed fields of c from its base fields (host).
