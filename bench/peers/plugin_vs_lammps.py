@@ -10,7 +10,7 @@ step, on 1 and 2 MPI ranks (1 OpenMP thread each). Runs alternate LAMMPS/epac pe
 of --repeats is kept: compare the ratios of one run.
 
 Usage: python3 bench/peers/plugin_vs_lammps.py [--ranks 1 2] [--repeats 1] [--ncell 14]
-         [--laws hm jkr nan mdr mdr_nogrowth] [--json FILE]
+         [--laws hm jkr nan mdr mdr_authors mdr_nogrowth] [--json FILE]
 lmp and epacplugin.so come from drivers/lammps/build.sh (EPAC_BUILD_DIR, default build/; LAMMPS
 cached under ~/.cache/epac/lammps/4Feb2025); run that first.
 """
@@ -34,6 +34,8 @@ LAWS = {
     "jkr": ("JKR + Mindlin (1 J/m^2, friction, damping)", "jkr_mindlin", "epac_jkr"),
     "nan": ("Nan 2022 (1 J/m^2, Y 5 MPa, friction, damping)", None, "epac_nan2022"),
     "mdr": ("MDR (Y 5 MPa, friction, damping) + radius growth", "mdr", "epac_mdr"),
+    "mdr_authors": ("MDR + radius growth, the authors' choices (pair_split geometric, delta_max running_max)",
+                    "mdr", "epac_mdr_authors"),
     "mdr_nogrowth": ("MDR without radius growth (epac only; LAMMPS always grows)", None, "epac_mdr_nogrowth"),
 }
 
