@@ -93,7 +93,6 @@ struct Mdr {
   int nmat = 0;
   T xi = T(1);
   bool geometric_split = false;  // MdrOptions::pair_split == geometric (the authors' flat)
-  T growth_in_max = T(1);        // MdrOptions::delta_max: 1 paper_19, 0 running_max
   MdrGrowthState<T, Device> growth;  // bound by bind() when Eff::radius_growth
   // Deterministic mode: the growth terms (columns of growth.sums) per contact side, enabled by
   // begin_deterministic_pass; side 0 of a pair is the particle with the smaller global id.
@@ -195,7 +194,7 @@ struct Mdr {
     if (is_pair) {
       // largest total overlap by (19): running maximum of the total delta_o, plus both growths
       // (MdrDeltaMax::running_max: of the total delta itself, the authors' code)
-      const T shift = growth_in_max * (growth_of[0] + growth_of[1]);
+      const T shift = pc.side_a.growth_in_max * (growth_of[0] + growth_of[1]);
       T dmax = g.delta;
       if (Eff::plasticity) {
         const T old = row(0);
@@ -232,23 +231,26 @@ struct Mdr {
       ps.set_weights();
       // first guess: the geometric split; once a side yielded, the last pass's ratio (see
       // mdr_pair_balance.hpp: elastic pairs keep a deterministic guess)
-      T guess = dside[0];
-      const bool plastic_pair = Eff::plasticity && (st[0].yielded != T(0) || st[1].yielded != T(0));
-      if (Eff::plasticity && plastic_pair) {
-        const T delta_last = row(2);
-        if (delta_last != T(0)) guess = row(1) + row(3) * (g.delta - delta_last);
-      }
+      // (MdrPairSplit::geometric: the sides at the geometric split itself, one evaluation, and no
+      // warm start to read or keep)
       T d0 = dside[0];
-      if (geometric_split)
-        ps(d0);  // MdrPairSplit::geometric: the sides at the geometric split itself (one evaluation)
-      else
+      if (geometric_split) {
+        ps(d0);
+      } else {
+        T guess = dside[0];
+        const bool plastic_pair = Eff::plasticity && (st[0].yielded != T(0) || st[1].yielded != T(0));
+        if (Eff::plasticity && plastic_pair) {
+          const T delta_last = row(2);
+          if (delta_last != T(0)) guess = row(1) + row(3) * (g.delta - delta_last);
+        }
         d0 = mdr_balance_split(ps, g.delta, guess, Rs[0] + Rs[1]);
+      }
       for (int s = 0; s < 2; ++s) {
         dside[s] = ps.d[s];
         st[s] = ps.st[s];
         res[s] = ps.r[s];
       }
-      if (Write && Eff::plasticity) {
+      if (Write && Eff::plasticity && !geometric_split) {
         if (st[0].yielded != T(0) || st[1].yielded != T(0)) {
           // w = lambda_1 k_1 / (lambda_0 k_0 + lambda_1 k_1) at the root (in [0, 1] while both
           // stiffnesses are positive; the geometric 1/2 otherwise)
@@ -420,7 +422,6 @@ struct Mdr {
                                  : mdr_pair_constants<T>(materials[a], materials[b], opt.yield_onset);
     // MdrOptions::delta_max into every copy of the side constants
     const T gim = opt.delta_max == MdrDeltaMax::running_max ? T(0) : T(1);
-    m.growth_in_max = gim;
     for (int a = 0; a < m.nmat; ++a) hs(a).growth_in_max = gim;
     for (int q = 0; q < m.nmat * m.nmat; ++q) {
       hp(q).side_a.growth_in_max = gim;
