@@ -189,22 +189,22 @@ TEMPLATE_TEST_CASE("MdrDeltaMax: growth at a fixed apparent overlap is plastic l
                    "authors' code), not for MDR (19)", "[mdr][growth]", double, float) {
   using T = TestType;
   const Material m = mdr_material(1e9, 0.3, 5e6);
-  MdrSideConstants<T> paper = mdr_side_constants<T>(m, MdrYieldOnset::elastic_law);
-  MdrSideConstants<T> authors = paper;
-  authors.growth_in_max = T(0);
-  REQUIRE(paper.growth_in_max == T(1));
+  // the model passes a side the shift of delta_max: R - R_o by (19), 0 for the running maximum
+  MdrOptions running;
+  running.delta_max = MdrDeltaMax::running_max;
+  CHECK(Mdr<T, Effects<kPlasticity | kRadiusGrowth>>::create({m}).growth_in_max == T(1));
+  CHECK(Mdr<T, Effects<kPlasticity | kRadiusGrowth>>::create({m}, running).growth_in_max == T(0));
+  const MdrSideConstants<T> c = mdr_side_constants<T>(m, MdrYieldOnset::elastic_law);
   const T R0 = T(1e-3), d = T(0.05e-3);  // delta/R = 0.05: yielded at E/Y = 200
-  for (const MdrSideConstants<T>* c : {&paper, &authors}) {
+  for (const bool paper : {true, false}) {
     MdrSideState<T> st;
     // load to d without growth: both conventions identical
-    for (int k = 1; k <= 50; ++k) mdr_side_force<true, false>(*c, T(0), T(1), d * T(k) / T(50), R0, T(0), st);
+    for (int k = 1; k <= 50; ++k) mdr_side_force<true, false>(c, T(0), T(1), d * T(k) / T(50), R0, T(0), st);
     REQUIRE(st.yielded != T(0));
-    const MdrSideState<T> loaded = st;
     // the radius grows by 1 um while the apparent overlap stays d (a neighbour's growth pushed it)
     const T g = T(1e-6);
-    MdrSideState<T> s2 = loaded;
-    const MdrSideResult<T> r = mdr_side_force<true, false>(*c, T(0), T(1), d, R0 + g, g, s2);
-    if (c == &paper) {
+    const MdrSideResult<T> r = mdr_side_force<true, false>(c, T(0), T(1), d, R0 + g, paper ? g : T(0), st);
+    if (paper) {
       CHECK_FALSE(r.loading);                       // delta_o = d - g is below delta_o,max = d
       CHECK(r.delta_max == Approx(double(d + g)));  // (19): delta_max moved with R
     } else {

@@ -39,7 +39,7 @@ KOKKOS_INLINE_FUNCTION T mdr_side_critical_overlap(const MdrSideConstants<T>& c,
                                                    const MdrSideState<T>& s) {
   T A = T(4) * R, B = T(2) * R, ratio = T(1), delta_p = T(0);  // elastic ellipse (31)
   if (Plasticity && s.yielded != T(0)) {
-    const MdrPlasticShape<T> sh = mdr_plastic_shape(c, s.delta_o_max + c.growth_in_max * growth, R, s.c_A);  // (19)
+    const MdrPlasticShape<T> sh = mdr_plastic_shape(c, s.delta_o_max + growth, R, s.c_A);  // (19)
     A = sh.A;
     B = sh.B;
     ratio = sh.ratio;

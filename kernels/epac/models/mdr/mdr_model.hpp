@@ -93,6 +93,9 @@ struct Mdr {
   int nmat = 0;
   T xi = T(1);
   bool geometric_split = false;  // MdrOptions::pair_split == geometric (the authors' flat)
+  // MdrOptions::delta_max: 1 for MDR (19), delta_max shifted by R - R_o; 0 for the authors' running
+  // maximum of delta (the sides then see no shift)
+  T growth_in_max = T(1);
   MdrGrowthState<T, Device> growth;  // bound by bind() when Eff::radius_growth
   // Deterministic mode: the growth terms (columns of growth.sums) per contact side, enabled by
   // begin_deterministic_pass; side 0 of a pair is the particle with the smaller global id.
@@ -170,7 +173,7 @@ struct Mdr {
     if (grows)
       for (int s = 0; s < nsides; ++s) {
         R0s[s] = growth.radius0(part[s]);
-        growth_of[s] = Rs[s] - R0s[s];
+        growth_of[s] = growth_in_max * (Rs[s] - R0s[s]);  // delta_max's shift (MdrDeltaMax)
       }
 
     // per-side history: the fields every regime needs (delta_p: below)
@@ -194,7 +197,7 @@ struct Mdr {
     if (is_pair) {
       // largest total overlap by (19): running maximum of the total delta_o, plus both growths
       // (MdrDeltaMax::running_max: of the total delta itself, the authors' code)
-      const T shift = pc.side_a.growth_in_max * (growth_of[0] + growth_of[1]);
+      const T shift = growth_of[0] + growth_of[1];
       T dmax = g.delta;
       if (Eff::plasticity) {
         const T old = row(0);
@@ -357,7 +360,7 @@ struct Mdr {
         st.yielded = row(b + 1);
         st.c_A = row(b + 2);
       }
-      const T grown = grows ? Rs[s] - growth.radius0(part[s]) : T(0);
+      const T grown = grows ? growth_in_max * (Rs[s] - growth.radius0(part[s])) : T(0);
       const T gamma_s = Eff::adhesion ? (side_b ? pc.gamma_b : pc.gamma_a) : T(0);
       critical += mdr_side_critical_overlap<Eff::plasticity>(side_b ? pc.side_b : pc.side_a, gamma_s, Rs[s], grown, st);
     }
@@ -420,13 +423,7 @@ struct Mdr {
         hp(a * m.nmat + b) = (materials[a].rigid && materials[b].rigid)
                                  ? MdrPairConstants<T>{}
                                  : mdr_pair_constants<T>(materials[a], materials[b], opt.yield_onset);
-    // MdrOptions::delta_max into every copy of the side constants
-    const T gim = opt.delta_max == MdrDeltaMax::running_max ? T(0) : T(1);
-    for (int a = 0; a < m.nmat; ++a) hs(a).growth_in_max = gim;
-    for (int q = 0; q < m.nmat * m.nmat; ++q) {
-      hp(q).side_a.growth_in_max = gim;
-      hp(q).side_b.growth_in_max = gim;
-    }
+    m.growth_in_max = opt.delta_max == MdrDeltaMax::running_max ? T(0) : T(1);
     Kokkos::deep_copy(m.sides, hs);
     Kokkos::deep_copy(m.pairs, hp);
     m.growth.rule = opt.growth_rule;

@@ -103,8 +103,6 @@ struct MdrSideConstants {
   T cA_over_R2;    // c_A / R^2 = pi (x_y^2 - x_y) at the switch, MDR (43); 0 if never yields
   T r_rho, r_z;    // E_eff (nu-1)/(2G) and E_eff/(4G): delta_R/(A/2) of MDR (34), see mdr_plastic_shape
   T inv_3kappa;    // 1 / (3 kappa), MDR (38)
-  // 1: delta_max by MDR (19) (growth shifts it); 0: the running maximum of delta (MdrDeltaMax)
-  T growth_in_max = T(1);
 };
 
 // Fills the precomputed fields of c from its base fields (host).

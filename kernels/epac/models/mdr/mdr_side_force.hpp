@@ -123,10 +123,9 @@ KOKKOS_FORCEINLINE_FUNCTION MdrSideResult<T> mdr_side_force(const MdrSideConstan
                                                             T delta, T R, T growth, MdrSideState<T>& s) {
   MdrSideResult<T> out;
   const T pi = constants<T>::pi;
-  // The running maximum is taken of delta_o = delta - (R - R_o) (MDR (19), growth_in_max 1) or
-  // of delta itself (the authors' code, growth_in_max 0; s.delta_o_max then holds max delta).
-  const T shift = c.growth_in_max * growth;
-  const T delta_o = delta - shift;
+  // (MdrDeltaMax::running_max, the authors' running maximum of delta itself: the model passes
+  // growth = 0, and s.delta_o_max then holds the largest delta)
+  const T delta_o = delta - growth;
   out.loading = delta_o >= s.delta_o_max;
   // delta - delta_max = delta_o - delta_o,max by (19) (exactly 0 on loading, <= 0 otherwise)
   // (the running maximum is plasticity history; without it delta_max stays R - R_o = 0)
@@ -135,7 +134,7 @@ KOKKOS_FORCEINLINE_FUNCTION MdrSideResult<T> mdr_side_force(const MdrSideConstan
     if (out.loading) s.delta_o_max = delta_o;
     else below_max = delta_o - s.delta_o_max;
   }
-  const T delta_max = s.delta_o_max + shift;  // (19)
+  const T delta_max = s.delta_o_max + growth;  // (19)
   out.delta_max = delta_max;
   if (Plasticity) {
     // Sharp switch (5.6.5), tested on loading only: unloading lowers the elastic pressure while
