@@ -34,7 +34,8 @@ LAWS = {
     "jkr": ("JKR + Mindlin (1 J/m^2, friction, damping)", "jkr_mindlin", "epac_jkr"),
     "nan": ("Nan 2022 (1 J/m^2, Y 5 MPa, friction, damping)", None, "epac_nan2022"),
     "mdr": ("MDR (Y 5 MPa, friction, damping) + radius growth", "mdr", "epac_mdr"),
-    "mdr_authors": ("MDR + radius growth, the authors' choices (pair_split geometric, delta_max running_max)",
+    "mdr_authors": ("MDR + radius growth, the authors' choices (pair_split geometric, delta_max running_max, "
+                    "damping/friction authors, yield_onset hertz_40)",
                     "mdr", "epac_mdr_authors"),
     "mdr_nogrowth": ("MDR without radius growth (epac only; LAMMPS always grows)", None, "epac_mdr_nogrowth"),
 }

@@ -20,6 +20,9 @@ const std::vector<ModelEntry>& model_registry() {
         choice_key("yield_onset", {"elastic_law", "hertz_40"}, 0),
         choice_key("pair_split", {"balanced", "geometric"}, 0),
         choice_key("delta_max", {"paper_19", "running_max"}, 0),
+        choice_key("damping", {"restitution_exact", "authors"}, 0),
+        choice_key("friction", {"mindlin", "authors"}, 0),
+        {"tangential_stiffness", 0.0, Bound::closed, inf, Bound::open, true, 0.0},  // k_t [N/m] of friction "authors"
         {"radius_cap", 1.0, Bound::closed, 10.0, Bound::closed, true, 1.5},         // R <= cap R_o
         {"denominator_floor", 0.0, Bound::open, 1.0, Bound::open, true, 0.05},     // guard of (37)
         {"volume_floor", 0.0, Bound::open, 1.0, Bound::open, true, 0.1}},          // V >= floor V_o

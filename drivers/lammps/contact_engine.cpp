@@ -56,10 +56,12 @@ class EngineFor final : public ContactEngine {
     return particles_;
   }
   void compute(const ContactList<>& pairs, const ContactHistory<double>& history, double dt,
-               const ContactForceBuffer<double, DefaultDevice>& buffer) override {
+               const ContactForceBuffer<double, DefaultDevice>& buffer, const WallPass* walls) override {
     zero_forces(particles_);
     sums_.begin();
     compute_pair_forces(model_, particles_, pairs, history, dt, sums_, {}, buffer);
+    if (walls && walls->list.count > 0)
+      compute_wall_forces(model_, particles_, walls->walls, walls->list, walls->history, dt, sums_, {}, walls->buffer);
     sums_.end();
   }
   // JKR's separation at detachment under displacement control, -delta_c = 3/4 (pi^2 w^2 R /
@@ -125,15 +127,23 @@ unsigned effects_of(const std::vector<Material>& mats) {
 }  // namespace
 
 std::unique_ptr<ContactEngine> make_engine(Law law, const std::vector<Material>& mats, bool radius_growth,
-                                           int pair_split, int delta_max) {
+                                           const MdrChoices& mdr) {
   if (radius_growth && law != Law::mdr)
     throw std::invalid_argument("epac plugin: radius growth is an MDR effect (fix epac/mdr needs pair_style epac/mdr)");
-  if ((pair_split != 0 || delta_max != 0) && law != Law::mdr)
-    throw std::invalid_argument("epac plugin: pair_split and delta_max are MDR options");
+  if ((mdr.pair_split != 0 || mdr.delta_max != 0 || mdr.damping != 0 || mdr.friction != 0 || mdr.yield_onset != 0 ||
+       mdr.surface_energy_share != 0) &&
+      law != Law::mdr)
+    throw std::invalid_argument("epac plugin: pair_split, delta_max, damping, friction, yield_onset and "
+                                "surface_energy_share are MDR options");
   const unsigned e = effects_of(mats);
   MdrOptions mdr_opt;
-  mdr_opt.pair_split = static_cast<MdrPairSplit>(pair_split);
-  mdr_opt.delta_max = static_cast<MdrDeltaMax>(delta_max);
+  mdr_opt.pair_split = static_cast<MdrPairSplit>(mdr.pair_split);
+  mdr_opt.delta_max = static_cast<MdrDeltaMax>(mdr.delta_max);
+  mdr_opt.damping = static_cast<MdrDamping>(mdr.damping);
+  mdr_opt.friction = static_cast<MdrFriction>(mdr.friction);
+  mdr_opt.tangential_stiffness = mdr.kt;
+  mdr_opt.yield_onset = static_cast<MdrYieldOnset>(mdr.yield_onset);
+  mdr_opt.surface_energy_share = static_cast<MdrSurfaceEnergyShare>(mdr.surface_energy_share);
   switch (law) {
     case Law::hertz_mindlin:
       return dispatch<HM, kFriction | kDamping>(e & (kFriction | kDamping), mats,

@@ -8,6 +8,7 @@
 #include <epac/state/contact_history.hpp>
 #include <epac/state/contact_list.hpp>
 #include <epac/state/particles.hpp>
+#include <epac/state/walls.hpp>
 
 #include <memory>
 #include <string>
@@ -17,6 +18,16 @@ namespace epac {
 namespace lammps {
 
 enum class Law { hertz_mindlin, jkr, nan2022, mdr };
+
+// The wall contacts of one force pass (fix epac/wall): one tangent plane per contact, contact k
+// is (particle list.first(k), plane list.second(k) = k), its history row k, its force and torque
+// stored per contact in `buffer` (the host adds them and reports them per wall).
+struct WallPass {
+  Walls<double> walls;
+  ContactList<> list;
+  ContactHistory<double> history;
+  ContactForceBuffer<double, DefaultDevice> buffer;
+};
 
 class ContactEngine {
  public:
@@ -28,8 +39,9 @@ class ContactEngine {
   // One force pass over `pairs` with `history` (one row per pair): adds into particles().force
   // and .torque (zeroed here first). With `buffer` allocated, the per-contact forces are stored
   // there instead (for the virial).
+  // `walls` (may be null): wall contacts evaluated in the same pass (the same growth sums).
   virtual void compute(const ContactList<>& pairs, const ContactHistory<double>& history, double dt,
-                       const ContactForceBuffer<double, DefaultDevice>& buffer) = 0;
+                       const ContactForceBuffer<double, DefaultDevice>& buffer, const WallPass* walls = nullptr) = 0;
   // The largest separation at which the law still holds two spheres of radii Ri, Rj of
   // materials a, b together (0 without adhesion): the neighbour cutoff must reach it.
   virtual double critical_separation(int a, int b, double Ri, double Rj) const = 0;
@@ -48,11 +60,19 @@ class ContactEngine {
 
 // Throws epac::ParameterError (naming the coefficient, its value and the valid range) for
 // materials the law rejects. radius_growth (MDR only, else std::invalid_argument) compiles the
-// law with epac::kRadiusGrowth. MDR only: pair_split, an epac::MdrPairSplit value (where a pair's
-// flat sits), and delta_max, an epac::MdrDeltaMax value (pair_style epac/mdr pair_split ...
-// delta_max ...).
+// law with epac::kRadiusGrowth. MDR only (MdrChoices): pair_split, an epac::MdrPairSplit value
+// (where a pair's flat sits), delta_max, an epac::MdrDeltaMax value, damping and friction
+// (pair_style epac/mdr pair_split ... delta_max ... damping ... friction ...).
+// MDR only: epac::MdrPairSplit, MdrDeltaMax, MdrDamping, MdrFriction, MdrYieldOnset and
+// MdrSurfaceEnergyShare values, kt
+// the k_t of MdrFriction::authors.
+// materials may end with rigid wall materials (fix epac/wall).
+struct MdrChoices {
+  int pair_split = 0, delta_max = 0, damping = 0, friction = 0, yield_onset = 0, surface_energy_share = 0;
+  double kt = 0.0;
+};
 std::unique_ptr<ContactEngine> make_engine(Law law, const std::vector<Material>& materials,
-                                           bool radius_growth = false, int pair_split = 0, int delta_max = 0);
+                                           bool radius_growth = false, const MdrChoices& mdr = {});
 
 }  // namespace lammps
 }  // namespace epac

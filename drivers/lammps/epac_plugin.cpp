@@ -1,6 +1,7 @@
 /* epacplugin.so: registers epac's contact laws with LAMMPS (`plugin load epacplugin.so`), and fix
-   epac/mdr (MDR radius growth for pair_style epac/mdr). */
+   epac/mdr (MDR radius growth for pair_style epac/mdr) and fix epac/wall (region walls). */
 #include "fix_epac_mdr.h"
+#include "fix_epac_wall.h"
 #include "lammpsplugin.h"
 #include "pair_epac.h"
 #include "version.h"
@@ -18,6 +19,7 @@ template <> Pair *make_pair<Law::jkr>(LAMMPS *lmp) { return new PairEpac(lmp, La
 template <> Pair *make_pair<Law::nan2022>(LAMMPS *lmp) { return new PairEpac(lmp, Law::nan2022, "epac/nan2022"); }
 template <> Pair *make_pair<Law::mdr>(LAMMPS *lmp) { return new PairEpac(lmp, Law::mdr, "epac/mdr"); }
 Fix *make_fix_mdr(LAMMPS *lmp, int narg, char **arg) { return new FixEpacMdr(lmp, narg, arg); }
+Fix *make_fix_wall(LAMMPS *lmp, int narg, char **arg) { return new FixEpacWall(lmp, narg, arg); }
 }  // namespace
 
 extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
@@ -45,5 +47,9 @@ extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
   plugin.name = "epac/mdr";
   plugin.info = "epac " EPAC_VERSION_STRING ": MDR radius growth (37)-(39) for pair_style epac/mdr";
   plugin.creator.v2 = (lammpsplugin_factory2 *) &make_fix_mdr;
+  (*reg)(&plugin, lmp);
+  plugin.name = "epac/wall";
+  plugin.info = "epac " EPAC_VERSION_STRING ": a region's surface as a rigid wall for pair_style epac/*";
+  plugin.creator.v2 = (lammpsplugin_factory2 *) &make_fix_wall;
   (*reg)(&plugin, lmp);
 }

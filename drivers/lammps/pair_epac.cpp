@@ -15,6 +15,7 @@
 #include "fix.h"
 #include "fix_dummy.h"
 #include "fix_epac_mdr.h"
+#include "fix_epac_wall.h"
 #include "fix_neigh_history.h"
 #include "force.h"
 #include "memory.h"
@@ -82,27 +83,45 @@ void PairEpac::allocate()
   maxrad_ = new double[n + 1];
   materials_.assign(n, epac::Material{});
   have_material_.assign(n, 0);
+  kt_.assign(n, 0.0);
 }
 
 // pair_style epac/<law> [pair_split balanced|geometric] [delta_max paper_19|running_max]
-// (epac/mdr only): pair_split places a pair's rigid flat where the sides' scaled forces balance
-// (default, passive) or at the authors' radical plane (geometric; not passive), epac::MdrPairSplit;
-// delta_max is MDR (19) (default) or the running maximum of the apparent overlap (the authors'
-// code), epac::MdrDeltaMax. Both set to the authors' choices for comparisons with granular mdr.
+// [damping restitution_exact|authors] [friction mindlin|authors] [yield_onset elastic_law|hertz_40]
+// [surface_energy_share series|each_side_full] (epac/mdr only): pair_split
+// places a pair's rigid flat where the sides' scaled forces balance (default, passive) or at the
+// authors' radical plane (geometric; not passive), epac::MdrPairSplit; delta_max is MDR (19)
+// (default) or the running maximum of the apparent overlap (the authors' code), epac::MdrDeltaMax;
+// damping and friction: epac's conventions or the authors' code's (epac::MdrDamping, MdrFriction;
+// friction authors = LAMMPS's `tangential linear_history kt 0 mu`, k_t from pair_coeff's kt);
+// yield_onset: where the elastic regime ends (epac::MdrYieldOnset; hertz_40 = MDR (41) read
+// literally, as the authors' code does); surface_energy_share: a pair's Delta gamma shared by the
+// sides in series (JKR between the spheres) or in full on each side (the authors' code). All
+// set to the authors' choices for comparisons with granular mdr.
 void PairEpac::settings(int narg, char **arg)
 {
   pair_split_ = 0;
   delta_max_ = 0;
+  damping_ = 0;
+  friction_ = 0;
+  yield_onset_ = 0;
+  energy_share_ = 0;
   struct Keyword { const char *name; int *value; std::vector<const char *> choices; };
   const Keyword keys[] = {{"pair_split", &pair_split_, {"balanced", "geometric"}},
-                          {"delta_max", &delta_max_, {"paper_19", "running_max"}}};
+                          {"delta_max", &delta_max_, {"paper_19", "running_max"}},
+                          {"damping", &damping_, {"restitution_exact", "authors"}},
+                          {"friction", &friction_, {"mindlin", "authors"}},
+                          {"yield_onset", &yield_onset_, {"elastic_law", "hertz_40"}},
+                          {"surface_energy_share", &energy_share_, {"series", "each_side_full"}}};
   for (int k = 0; k < narg; k += 2) {
     const Keyword *key = nullptr;
     for (const auto &kw : keys)
       if (std::strcmp(arg[k], kw.name) == 0) key = &kw;
     if (!key || law_ != Law::mdr || k + 1 >= narg)
       error->all(FLERR, "Illegal pair_style {} command: {} (valid: {})", style_, arg[k],
-                 law_ == Law::mdr ? "pair_split balanced|geometric, delta_max paper_19|running_max"
+                 law_ == Law::mdr ? "pair_split balanced|geometric, delta_max paper_19|running_max, "
+                                    "damping restitution_exact|authors, friction mindlin|authors, "
+                                    "yield_onset elastic_law|hertz_40, surface_energy_share series|each_side_full"
                                   : "no arguments");
     int found = -1;
     for (std::size_t q = 0; q < key->choices.size(); q++)
@@ -120,10 +139,11 @@ void PairEpac::settings(int narg, char **arg)
 //   epac/hertz_mindlin: E nu e mu
 //   epac/jkr:           E nu e mu gamma
 //   epac/nan2022:       E nu e mu gamma Y
-//   epac/mdr:           E nu Y gamma psi_b e [mu]
+//   epac/mdr:           E nu Y gamma psi_b e [mu MU] [kt KT]
 // E [Pa], nu, e the normal restitution coefficient (1: no damping), mu the sliding friction
 // coefficient (0: no friction), gamma the surface energy [J/m^2] (0: no adhesion), Y the yield
-// stress [Pa] (inf: none), psi_b Part II's bulk-response threshold (not in epac: must be 0).
+// stress [Pa] (inf: none), psi_b Part II's bulk-response threshold (not in epac: must be 0),
+// kt the constant tangential stiffness [N/m] of pair_style epac/mdr friction authors.
 int PairEpac::coefficient_count() const
 {
   switch (law_) {
@@ -167,9 +187,10 @@ void PairEpac::coeff(int narg, char **arg)
 {
   if (!allocated) allocate();
   const int nc = coefficient_count();
-  const bool mdr_mu = (law_ == Law::mdr && narg == 2 + nc + 2);
-  if (narg != 2 + nc && !mdr_mu)
-    error->all(FLERR, "Incorrect args for pair_coeff {}: expected {} coefficients", style_, nc);
+  const bool mdr_keys = (law_ == Law::mdr && narg > 2 + nc && (narg - 2 - nc) % 2 == 0 && narg <= 2 + nc + 4);
+  if (narg != 2 + nc && !mdr_keys)
+    error->all(FLERR, "Incorrect args for pair_coeff {}: expected {} coefficients{}", style_, nc,
+               law_ == Law::mdr ? " and optionally mu MU, kt KT" : "");
   int ilo, ihi, jlo, jhi;
   utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
   utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
@@ -178,10 +199,14 @@ void PairEpac::coeff(int narg, char **arg)
     error->all(FLERR, "pair_coeff {} sets a material per atom type: use 'I I' or '* *' (epac mixes unlike "
                "types from their materials)", style_);
   epac::Material m = material_from(arg + 2, ilo);
-  if (mdr_mu) {
-    if (std::strcmp(arg[2 + nc], "mu") != 0)
-      error->all(FLERR, "pair_coeff {}: unknown keyword {} (valid: mu)", style_, arg[2 + nc]);
-    m.friction = utils::numeric(FLERR, arg[3 + nc], false, lmp);
+  double kt = 0.0;
+  for (int k = 2 + nc; mdr_keys && k < narg; k += 2) {
+    if (std::strcmp(arg[k], "mu") == 0) m.friction = utils::numeric(FLERR, arg[k + 1], false, lmp);
+    else if (std::strcmp(arg[k], "kt") == 0) {
+      kt = utils::numeric(FLERR, arg[k + 1], false, lmp);
+      if (!(kt > 0.0) || !std::isfinite(kt))
+        error->all(FLERR, "pair_coeff {}: kt = {} is not valid (valid: 0 < kt < inf, N/m)", style_, kt);
+    } else error->all(FLERR, "pair_coeff {}: unknown keyword {} (valid: mu, kt)", style_, arg[k]);
   }
   try {
     m.validate();
@@ -193,6 +218,7 @@ void PairEpac::coeff(int narg, char **arg)
     materials_[i - 1] = m;
     materials_[i - 1].name = "type " + std::to_string(i);
     have_material_[i - 1] = 1;
+    kt_[i - 1] = kt;
     for (int j = MAX(jlo, i); j <= jhi; j++) {
       setflag[i][j] = 1;
       count++;
@@ -215,8 +241,30 @@ void PairEpac::init_style()
   for (auto *f : modify->get_fix_by_style("^epac/mdr$")) growth_fix_ = dynamic_cast<FixEpacMdr *>(f);
   if (growth_fix_ && law_ != Law::mdr)
     error->all(FLERR, "fix epac/mdr (radius growth) needs pair_style epac/mdr, not {}", style_);
+  // fix epac/wall: per fix, one rigid copy of each type's material for the wall side (it takes the
+  // particle's friction, restitution and surface energy unless the fix sets its own;
+  // epac::pair_properties)
+  wall_fixes_.clear();
+  for (auto *f : modify->get_fix_by_style("^epac/wall$")) wall_fixes_.push_back(dynamic_cast<FixEpacWall *>(f));
+  std::vector<epac::Material> mats = materials_;
+  for (auto *wf : wall_fixes_)
+    for (int t = 0; t < atom->ntypes; t++) mats.push_back(wf->wall_material(materials_[t], t + 1));
+  epac::lammps::MdrChoices choices;
+  choices.pair_split = pair_split_;
+  choices.delta_max = delta_max_;
+  choices.damping = damping_;
+  choices.friction = friction_;
+  choices.yield_onset = yield_onset_;
+  choices.surface_energy_share = energy_share_;
+  if (friction_ == 1) {  // MdrFriction::authors: one k_t for every pair
+    choices.kt = kt_[0];
+    for (int t = 0; t < atom->ntypes; t++)
+      if (kt_[t] != kt_[0] || !(kt_[t] > 0.0))
+        error->all(FLERR, "pair {} friction authors: every type needs the same pair_coeff kt > 0 (type {}: {}, "
+                   "type 1: {})", style_, t + 1, kt_[t], kt_[0]);
+  }
   try {
-    engine_ = epac::lammps::make_engine(law_, materials_, growth_fix_ != nullptr, pair_split_, delta_max_);
+    engine_ = epac::lammps::make_engine(law_, mats, growth_fix_ != nullptr, choices);
   } catch (std::exception &e) {
     error->all(FLERR, "pair {}: {}", style_, e.what());
   }
@@ -225,6 +273,9 @@ void PairEpac::init_style()
     error->all(FLERR, "pair {}: the coefficients or fix epac/mdr changed the history size ({} -> {}) after the "
                "first run; start a new pair_style", style_, history_size_, engine_->history_size());
   history_size_ = engine_->history_size();
+  if (!wall_fixes_.empty() && history_size_ > FixEpacWall::kMaxHistory)
+    error->all(FLERR, "pair {}: {} history fields per contact, fix epac/wall holds {}", style_, history_size_,
+               FixEpacWall::kMaxHistory);
 
   neighbor->add_request(this, NeighConst::REQ_SIZE | NeighConst::REQ_HISTORY);
   if (fix_history_ == nullptr) {
@@ -241,6 +292,15 @@ void PairEpac::init_style()
   for (int i = 0; i < atom->nlocal; i++) onerad_[type[i]] = MAX(onerad_[type[i]], radius[i]);
   MPI_Allreduce(&onerad_[1], &maxrad_[1], atom->ntypes, MPI_DOUBLE, MPI_MAX, world);
   last_list_ = nullptr;
+  // a wall's adhesive reach: the pair bound for two spheres of the type's largest radius (R* = R/2
+  // and E* = E_eff/2 give a longer JKR range than the wall's R* = R, E* = E_eff: a bound)
+  wall_range_.assign(atom->ntypes + 1, 0.0);
+  for (int t = 1; t <= atom->ntypes; t++)
+    for (std::size_t f = 0; f < wall_fixes_.size(); f++) {
+      const int w = atom->ntypes * (1 + static_cast<int>(f)) + t - 1;  // the wall's own surface energy
+      wall_range_[t] = MAX(wall_range_[t], engine_->critical_separation(w, w, maxrad_[t], maxrad_[t]) *
+                                               (growth_ ? engine_->radius_cap() : 1.0));
+    }
 
   // Growth: the size neighbour lists test radius_i + radius_j + skin with the radii of each
   // rebuild, and init_one scales the cutoff (ghost shell, bins) by the radius cap, so grown
@@ -381,6 +441,66 @@ void PairEpac::build_contacts()
   }
 }
 
+// The wall contacts of this pass (fix epac/wall): one tangent plane per contact, material: the
+// fix's rigid copy of the atom type's (ntypes (1 + f) + type - 1), history rows from the fixes'
+// per-atom slots.
+void PairEpac::collect_walls(epac::lammps::WallPass &pass)
+{
+  wall_contacts_.clear();
+  wall_owner_.clear();
+  for (std::size_t f = 0; f < wall_fixes_.size(); f++) {
+    wall_fixes_[f]->find_contacts(wall_range_.data(), wall_contacts_);
+    wall_owner_.resize(wall_contacts_.size(), static_cast<int>(f));
+  }
+  const int n = static_cast<int>(wall_contacts_.size());
+  pass.walls = epac::Walls<double>(n, "lammps.walls");
+  pass.list = epac::ContactList<>(n);
+  pass.history = epac::ContactHistory<double>(n, history_size_, "lammps.wall_history");
+  pass.buffer = epac::ContactForceBuffer<double, epac::DefaultDevice>(n);
+  if (n == 0) return;
+  auto pt = Kokkos::create_mirror_view(pass.walls.point);
+  auto nv = Kokkos::create_mirror_view(pass.walls.normal);
+  auto vel = Kokkos::create_mirror_view(pass.walls.velocity);
+  auto mat = Kokkos::create_mirror_view(pass.walls.material);
+  auto first = Kokkos::create_mirror_view(pass.list.first);
+  auto second = Kokkos::create_mirror_view(pass.list.second);
+  auto h = Kokkos::create_mirror_view(pass.history.data);
+  int *type = atom->type;
+  for (int k = 0; k < n; k++) {
+    const auto &c = wall_contacts_[k];
+    for (int d = 0; d < 3; d++) { pt(k, d) = c.point[d]; nv(k, d) = c.normal[d]; vel(k, d) = c.velocity[d]; }
+    mat(k) = atom->ntypes * (1 + wall_owner_[k]) + type[c.atom] - 1;
+    first(k) = c.atom;
+    second(k) = k;
+    for (int q = 0; q < history_size_; q++) h(k, q) = c.history[q];
+  }
+  Kokkos::deep_copy(pass.walls.point, pt); Kokkos::deep_copy(pass.walls.normal, nv);
+  Kokkos::deep_copy(pass.walls.velocity, vel); Kokkos::deep_copy(pass.walls.material, mat);
+  Kokkos::deep_copy(pass.list.first, first); Kokkos::deep_copy(pass.list.second, second);
+  if (history_size_ > 0) Kokkos::deep_copy(pass.history.data, h);
+}
+
+// Wall forces and torques onto the atoms, into the fixes' per-atom output, and (non-setup
+// passes) the advanced history back into the fixes' slots.
+void PairEpac::apply_walls(const epac::lammps::WallPass &pass, bool advance)
+{
+  for (auto *f : wall_fixes_) f->clear_contact_output();
+  const int n = static_cast<int>(wall_contacts_.size());
+  if (n == 0) return;
+  auto F = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), pass.buffer.force);
+  auto T = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), pass.buffer.torque_i);
+  auto h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), pass.history.data);
+  double **f = atom->f, **t = atom->torque, *radius = atom->radius;
+  for (int k = 0; k < n; k++) {
+    const auto &c = wall_contacts_[k];
+    const double fk[3] = {F(k, 0), F(k, 1), F(k, 2)};
+    for (int d = 0; d < 3; d++) { f[c.atom][d] += fk[d]; t[c.atom][d] += T(k, d); }
+    wall_fixes_[wall_owner_[k]]->record_contact(c, fk, radius[c.atom]);
+    if (advance)
+      for (int q = 0; q < history_size_; q++) c.history[q] = h(k, q);
+  }
+}
+
 void PairEpac::add_forces(int nlocal, bool with_ghosts)
 {
   auto &p = engine_->particles(0);
@@ -419,9 +539,13 @@ void PairEpac::compute(int eflag, int vflag)
   // one of the step that wrote the history (LAMMPS's history_update = 0); a run continued from a
   // restart or a new `run` then retraces an uninterrupted one.
   const double dt = advance ? update->dt : 0.0;
+  epac::lammps::WallPass walls;
+  const bool have_walls = !wall_fixes_.empty();
+  if (have_walls) collect_walls(walls);
+  const epac::lammps::WallPass *wp = have_walls ? &walls : nullptr;
   if (vflag_either) {
     epac::ContactForceBuffer<double, epac::DefaultDevice> buf(n);
-    engine_->compute(contacts_, h, dt, buf);
+    engine_->compute(contacts_, h, dt, buf, wp);
     auto F = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), buf.force);
     auto Ti = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), buf.torque_i);
     auto Tj = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), buf.torque_j);
@@ -435,9 +559,10 @@ void PairEpac::compute(int eflag, int vflag)
                    x[i][1] - x[j][1], x[i][2] - x[j][2]);
     }
   } else {
-    engine_->compute(contacts_, h, dt, {});
+    engine_->compute(contacts_, h, dt, {}, wp);
     add_forces(nlocal, newton);
   }
+  if (have_walls) apply_walls(walls, advance);
   if (growth_) grow_radii(nlocal, advance);
   if (advance && history_size_ > 0) {
     auto hv = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), history_.data);
@@ -463,9 +588,9 @@ void PairEpac::write_restart(FILE *fp)
 {
   for (int i = 1; i <= atom->ntypes; i++) {
     const epac::Material &m = materials_[i - 1];
-    const double v[7] = {m.youngs_modulus, m.poisson_ratio, m.restitution, m.friction, m.surface_energy,
-                         m.yield_stress, static_cast<double>(have_material_[i - 1])};
-    fwrite(v, sizeof(double), 7, fp);
+    const double v[8] = {m.youngs_modulus, m.poisson_ratio, m.restitution, m.friction, m.surface_energy,
+                         m.yield_stress, static_cast<double>(have_material_[i - 1]), kt_[i - 1]};
+    fwrite(v, sizeof(double), 8, fp);
   }
 }
 
@@ -473,32 +598,37 @@ void PairEpac::read_restart(FILE *fp)
 {
   allocate();
   for (int i = 1; i <= atom->ntypes; i++) {
-    double v[7];
-    if (comm->me == 0) utils::sfread(FLERR, v, sizeof(double), 7, fp, nullptr, error);
-    MPI_Bcast(v, 7, MPI_DOUBLE, 0, world);
+    double v[8];
+    if (comm->me == 0) utils::sfread(FLERR, v, sizeof(double), 8, fp, nullptr, error);
+    MPI_Bcast(v, 8, MPI_DOUBLE, 0, world);
     epac::Material &m = materials_[i - 1];
     m.name = "type " + std::to_string(i);
     m.density = 1.0;
     m.youngs_modulus = v[0]; m.poisson_ratio = v[1]; m.restitution = v[2]; m.friction = v[3];
     m.surface_energy = v[4]; m.yield_stress = v[5];
     have_material_[i - 1] = v[6] != 0.0;
+    kt_[i - 1] = v[7];
     for (int j = i; j <= atom->ntypes; j++) setflag[i][j] = have_material_[i - 1] && have_material_[j - 1];
   }
 }
 
 void PairEpac::write_restart_settings(FILE *fp)
 {
-  const int v[2] = {pair_split_, delta_max_};
-  fwrite(v, sizeof(int), 2, fp);
+  const int v[6] = {pair_split_, delta_max_, damping_, friction_, yield_onset_, energy_share_};
+  fwrite(v, sizeof(int), 6, fp);
 }
 
 void PairEpac::read_restart_settings(FILE *fp)
 {
-  int v[2] = {0, 0};
-  if (comm->me == 0) utils::sfread(FLERR, v, sizeof(int), 2, fp, nullptr, error);
-  MPI_Bcast(v, 2, MPI_INT, 0, world);
+  int v[6] = {0, 0, 0, 0, 0, 0};
+  if (comm->me == 0) utils::sfread(FLERR, v, sizeof(int), 6, fp, nullptr, error);
+  MPI_Bcast(v, 6, MPI_INT, 0, world);
   pair_split_ = v[0];
   delta_max_ = v[1];
+  damping_ = v[2];
+  friction_ = v[3];
+  yield_onset_ = v[4];
+  energy_share_ = v[5];
 }
 
 double PairEpac::memory_usage()

@@ -5,6 +5,7 @@
 #define EPAC_LAMMPS_PAIR_EPAC_H
 
 #include "contact_engine.hpp"
+#include "fix_epac_wall.h"
 #include "pair.h"
 
 #include <memory>
@@ -53,6 +54,19 @@ class PairEpac : public Pair {
   int history_size_ = 0;
   int pair_split_ = 0;  // pair_style epac/mdr pair_split: epac::MdrPairSplit
   int delta_max_ = 0;   // pair_style epac/mdr delta_max: epac::MdrDeltaMax
+  int damping_ = 0;     // pair_style epac/mdr damping: epac::MdrDamping
+  int friction_ = 0;    // pair_style epac/mdr friction: epac::MdrFriction
+  int yield_onset_ = 0; // pair_style epac/mdr yield_onset: epac::MdrYieldOnset
+  int energy_share_ = 0;  // pair_style epac/mdr surface_energy_share: epac::MdrSurfaceEnergyShare
+  std::vector<double> kt_;  // per type: pair_coeff keyword kt (MdrFriction::authors' k_t)
+  // fix epac/wall: their contacts are evaluated in this pass; the engine's materials then end with
+  // one rigid copy per wall fix and type (index ntypes + f ntypes + type - 1) for the wall side
+  std::vector<FixEpacWall *> wall_fixes_;
+  std::vector<double> wall_range_;  // per type (1..ntypes): the law's adhesive reach at a wall
+  std::vector<FixEpacWall::Contact> wall_contacts_;
+  std::vector<int> wall_owner_;      // per wall contact: its fix in wall_fixes_
+  void collect_walls(epac::lammps::WallPass &pass);
+  void apply_walls(const epac::lammps::WallPass &pass, bool advance);
   bool history_fix_made_ = false;
   double *onerad_ = nullptr, *maxrad_ = nullptr;  // per type: largest radius (local, global)
   // fix epac/mdr (MDR radius growth, epac/mdr only): its R_o and V feed the engine; null without it

@@ -87,7 +87,7 @@ def main():
                     help="epac's delta_max with growth: MDR (19) (default) or running_max (the authors' code)")
     ap.add_argument("--authors", action="store_true",
                     help="epac's documented conventions set to the authors' choices: pair_split geometric, "
-                         "delta_max running_max")
+                         "delta_max running_max, yield_onset hertz_40")
     ap.add_argument("--onerun", type=int, default=0,
                     help="1: compression and hold in one run (no setup pass between; see in.mdr_compaction)")
     ap.add_argument("--ranks", type=int, default=1)
@@ -109,6 +109,8 @@ def main():
     if args.authors:
         args.pair_split, args.delta_max = "geometric", "running_max"
     epac_style = f"epac/mdr pair_split {args.pair_split} delta_max {args.delta_max}"
+    if args.authors:  # (no friction and CoR 1 here: damping and friction conventions do not enter)
+        epac_style += " yield_onset hertz_40"
     failed = False
     print(f"scene: ncell {args.ncell} ({4 * args.ncell ** 3} atoms), strain {args.strain} in {args.nsteps} steps, "
           f"hold {args.nhold}; E {args.E} nu {args.nu} Y {args.Y} CoR {args.CoR}; {epac_style}; files in {workdir}")

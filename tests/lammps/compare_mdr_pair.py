@@ -7,7 +7,7 @@ ratios R2/R1 = 1, 2, 5, plastic (E/Y = 200) and elastic (Y = 1e12 Pa), both with
 no damping (CoR 1), no friction, no adhesion, psi_b 0, it compares epac's force with LAMMPS's at the
 same steps: max |F_epac - F_lammps| / peak |F_lammps|.
   - epac's documented conventions set to the authors' choices (pair_style epac/mdr pair_split
-    geometric delta_max running_max): every case within 1% (asserted);
+    geometric delta_max running_max yield_onset hertz_40): every case within 1% (asserted);
   - epac's defaults (balanced split, delta_max by (19)): elastic cases and equal radii within 1%
     (asserted); plastic unequal pairs printed (the balance departs from the radical plane at
     first order once the sides yield: README "MDR conventions").
@@ -62,7 +62,7 @@ def main():
                       base + [("pcoeffs", f"mdr 1e9 0.3 {Y} 0 0 1 tangential linear_nohistory 0 0 damping none")])
             peak = max(abs(v[1]) for v in ref.values())
             res = {}
-            for split, style in (("geometric", "epac/mdr pair_split geometric delta_max running_max"),
+            for split, style in (("geometric", "epac/mdr pair_split geometric delta_max running_max yield_onset hertz_40"),
                                  ("balanced", "epac/mdr")):
                 e = run(args, workdir, f"epac_{split}_{tag}",
                         base + [("plugin", plugin), ("pstyle", style),

@@ -10,12 +10,14 @@ CHECK is one of
                   steps within 1e-8. Damping and friction are off in both: their conventions
                   differ (drivers/lammps/README.md); the differences they make are printed.
   ranks           1 against 2 MPI ranks: the same thermo output (12 printed digits) for
-                  epac/hertz_mindlin with damping and friction (newton on and off), and epac/mdr
-                  with plasticity, adhesion and damping, 1,000 steps of the 4,000-sphere settling.
+                  epac/hertz_mindlin with damping and friction (newton on and off), epac/mdr
+                  with plasticity, adhesion and damping, and epac/mdr with friction, fix epac/mdr
+                  and the floor as fix epac/wall, 1,000 steps of the 4,000-sphere settling.
   restart         write_restart at step 500 and read_restart in a new process: the same thermo
                   lines as the run continued in-process (which also starts a new `run`), and with
                   no velocity-dependent force the same as one uninterrupted run; the deviations
-                  with damping and friction, and LAMMPS's own granular style, are printed.
+                  with damping and friction, and LAMMPS's own granular style, are printed; MDR
+                  with fix epac/mdr, and with fix epac/wall as the floor (wall history restarted).
 Each check prints what it compared and exits 1 on a failure.
 """
 import argparse
@@ -155,17 +157,20 @@ def thermo_equal(a, b, what):
 
 def ranks(args):
     print("ranks: 1 against 2 MPI ranks, 4,000-sphere settling, 1,000 steps")
-    cases = (("epac/hertz_mindlin", "1e7 0.3 0.5 0.4", "on"),
-             ("epac/hertz_mindlin", "1e7 0.3 0.5 0.4", "off"),  # ghost pairs evaluated on both ranks
-             ("epac/mdr", "1e7 0.3 2e5 0.05 0 0.5", "on"))
-    for style, coeffs, newton in cases:
+    cases = (("epac/hertz_mindlin", "1e7 0.3 0.5 0.4", "on", []),
+             ("epac/hertz_mindlin", "1e7 0.3 0.5 0.4", "off", []),  # ghost pairs evaluated on both ranks
+             ("epac/mdr", "1e7 0.3 2e5 0.05 0 0.5", "on", []),
+             # radius growth and the floor as fix epac/wall (its per-atom history migrates)
+             ("epac/mdr", "1e7 0.3 5e3 0.05 0 0.5 mu 0.4", "off", [("grow", "1"), ("floor", "epac")]))
+    for style, coeffs, newton, extra in cases:
         t = {}
         for n in (1, 2):
-            t[n] = lmp(args, ranks=n, variables=[("style", style), ("coeffs", coeffs), ("newton", newton)],
-                       tag=f"ranks_{style.replace('/', '_')}_{newton}_{n}")
+            t[n] = lmp(args, ranks=n, variables=[("style", style), ("coeffs", coeffs), ("newton", newton)] + extra,
+                       tag=f"ranks_{style.replace('/', '_')}_{newton}_{len(extra)}_{n}")
         # kinetic energy to all 12 printed digits; pressure: the ghost contributions are summed in
         # another order on 2 ranks (reverse communication), so its 12th digit may differ
         ke_same = all(t[1][s][0][0:2] == t[2][s][0][0:2] for s in t[1])
+        style = style + "".join(f" {k} {v}" for k, v in extra)
         check(ke_same, f"{style} ({coeffs}, newton {newton}): kinetic energy equal to 12 digits at every thermo step, 1 vs 2 ranks")
         worst = max(abs(float(t[1][s][0][2]) - float(t[2][s][0][2])) / abs(float(t[1][s][0][2])) for s in t[1])
         check(worst < 1e-10, f"{style} (newton {newton}): pressure within {worst:.1e} relative (< 1e-10), 1 vs 2 ranks")
@@ -177,9 +182,13 @@ def restart(args):
              ("epac/hertz_mindlin", "1e7 0.3 0.5 0.4", False),  # damping and friction
              ("epac/mdr", "1e7 0.3 2e5 0.05 0 0.5", False),
              ("epac/mdr", "1e7 0.3 5e3 0.05 0 0.5", "growth"),  # + fix epac/mdr (newton off; radii grow by 1e-4)
+             # + the floor as fix epac/wall with friction: its per-atom history through the restart file
+             ("epac/mdr", "1e7 0.3 5e3 0.05 0 0.5 mu 0.4", "growth+wall"),
              ("granular", "hertz/material 1e7 0.5 0.3 tangential mindlin NULL 1.0 0.4 damping coeff_restitution", None))
     for k, (style, coeffs, exact) in enumerate(cases):
-        grow = [("grow", "1"), ("newton", "off")] if exact == "growth" else []
+        grow = [("grow", "1"), ("newton", "off")] if exact in ("growth", "growth+wall") else []
+        if exact == "growth+wall":
+            grow.append(("floor", "epac"))
         base = [("style", style), ("coeffs", coeffs), ("restartfile", f"case{k}.restart")] + grow
         whole = lmp(args, variables=base, tag=f"whole{k}")
         split = lmp(args, variables=base + [("split", "500")], tag=f"split{k}")
@@ -194,7 +203,8 @@ def restart(args):
                   f"vs uninterrupted {ke_dev(res, unint):.1e} (kinetic energy, relative)")
             continue
         thermo_equal({s: [v] for s, v in res.items()}, {s: [v] for s, v in cont.items()},
-                     f"{style} {coeffs}{' + fix epac/mdr' if grow else ''}: resumed vs continued in-process")
+                     f"{style} {coeffs}{' + fix epac/mdr' if grow else ''}{' + fix epac/wall' if exact == 'growth+wall' else ''}"
+                     ": resumed vs continued in-process")
         if exact is True:
             thermo_equal({s: [v] for s, v in res.items()}, {s: [v] for s, v in unint.items()},
                          f"{style} {coeffs}: resumed vs uninterrupted")

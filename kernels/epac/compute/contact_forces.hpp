@@ -130,16 +130,25 @@ KOKKOS_FORCEINLINE_FUNCTION void finish_contact(const Model& model, const Partic
   if (Eff::damping) {
     const T fd = nf.damping * math::sqrt_nonneg(g.m_eff * nf.k_n) * g.delta_dot;
     if (!nf.damp_compressive_only) fn += fd;
-    else if (fn > T(0)) fn = math::max(fn + fd, T(0));  // damping never turns a push into a pull
+    else if (fn > T(0)) fn = nf.damp_may_pull ? fn + fd : math::max(fn + fd, T(0));  // by default damping never turns a push into a pull
   }
   Vec3<T> F = fn * g.n;
   Vec3<T> nxft;  // n x F_t: the torques are -arm_i (n x F_t) on i and -arm_j (n x F_t) on j
   if (Eff::friction) {
-    const Vec3<T> v_t = v_c - vn * g.n;
+    Vec3<T> v_t = v_c - vn * g.n;
+    if (nf.full_radius_arms) {
+      // the authors' convention (LAMMPS granular_model.cpp): rolling velocity with the full radii
+      Vec3<T> w_full = g.R_i * load3(p.omega, g.i);
+      if (IsPair) w_full += g.R_j * load3(p.omega, g.j);
+      v_t = v_rel - vn * g.n - cross(w_full, g.n);
+      if (!IsPair) arm_i = g.R_i;
+    }
     const T damp_t = Eff::damping ? nf.damping_t * math::sqrt_nonneg(g.m_eff * nf.k_t) : T(0);
     // history in the frame of the smaller global id (walls: the particle's)
     const T orient = (!IsPair || g.i_is_first) ? T(1) : T(-1);
-    const Vec3<T> ft = tangential_spring_force(nf, g.n, v_t, damp_t, g.dt, trow, orient);
+    NormalForce<T> nft = nf;
+    if (nf.coulomb_on_damped) nft.f = fn;  // the Coulomb bound on the damped normal force
+    const Vec3<T> ft = tangential_spring_force(nft, g.n, v_t, damp_t, g.dt, trow, orient);
     F += ft;
     nxft = cross(g.n, ft);
   }

@@ -32,6 +32,11 @@ struct NormalForce {
   T k_n = 0;        // normal stiffness used for damping and for k_t (the law's current branch)
   T damping = 0;    // viscous coefficient: F_d = damping * sqrt(m_eff * k_n) * delta_dot
   bool damp_compressive_only = false;  // damp only while f > 0, and never let f + F_d pull
+  // The authors' MDR conventions (MdrFriction::authors, MdrDamping::authors; LAMMPS granular mdr):
+  bool damp_may_pull = false;      // with damp_compressive_only: f + F_d is not clamped at 0
+  bool coulomb_on_damped = false;  // Coulomb bound mu |f + F_d| instead of mu |f|
+  bool full_radius_arms = false;   // the rolling part of the contact-point velocity uses R_i w_i
+                                   // + R_j w_j, and a wall's torque arm is R_i (not R_i - delta)
   T k_t = 0;        // tangential stiffness
   T damping_t = 0;  // tangential viscous coefficient: F_td = -damping_t sqrt(m_eff k_t) v_t
   T mu = 0;         // Coulomb friction coefficient

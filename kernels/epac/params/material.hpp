@@ -18,6 +18,9 @@ struct Material {
   double surface_energy = 0;   // Gamma (Nan) = Delta gamma (MDR) [J/m^2]; 0 = no adhesion
   double yield_stress = std::numeric_limits<double>::infinity();  // Y or sigma_y [Pa]; inf = no yield
   bool rigid = false;          // rigid body (walls): contributes no compliance
+  // Rigid only: its own restitution, friction and surface energy for its contacts (default: a
+  // rigid wall takes the particle's). E.g. a die wall with less friction than the powder.
+  bool own_surface_properties = false;
 
   double shear_modulus() const { return youngs_modulus / (2.0 * (1.0 + poisson_ratio)); }
 
@@ -51,11 +54,12 @@ inline PairProperties pair_properties(const Material& a, const Material& b) {
   PairProperties p;
   p.E_star = 1.0 / (cE(a) + cE(b));
   p.G_star = 1.0 / (cG(a) + cG(b));
-  // Rigid walls take the particle's value; otherwise the lower restitution / mean friction /
-  // combined surface energy (Dupre: the same material gives Gamma).
+  // Rigid walls take the particle's value (their own with own_surface_properties); otherwise the
+  // lower restitution / mean friction / combined surface energy (Dupre: the same material gives
+  // Gamma).
   auto pick = [&](double va, double vb, bool use_min) {
-    if (a.rigid) return vb;
-    if (b.rigid) return va;
+    if (a.rigid) return a.own_surface_properties ? va : vb;
+    if (b.rigid) return b.own_surface_properties ? vb : va;
     return use_min ? std::min(va, vb) : 0.5 * (va + vb);
   };
   p.restitution = pick(a.restitution, b.restitution, true);

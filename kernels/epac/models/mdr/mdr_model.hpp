@@ -27,6 +27,8 @@
 //   (damp_compressive_only). The authors' code uses k_n = E* R* instead.
 // - Friction: the foundation's tangential spring with k_t = (4 G*/E*) k_n = 8 G* a-bar (Mindlin,
 //   Nan (22)); its Coulomb limit mu |f| uses the MDR force including adhesive tension.
+// - MdrDamping::authors and MdrFriction::authors replace both by the authors' code's conventions
+//   (mdr_parameters.hpp) for comparisons with LAMMPS's `granular mdr`.
 // - A contact is inactive (its history reset, tangential history too) once the apparent overlap is
 //   <= 0 and no side holds an adhesive radius, or once the surfaces are apart by more than the
 //   contact's critical overlap (mdr_detachment.hpp), whatever the sides' histories; the reset
@@ -96,6 +98,9 @@ struct Mdr {
   // MdrOptions::delta_max: 1 for MDR (19), delta_max shifted by R - R_o; 0 for the authors' running
   // maximum of delta (the sides then see no shift)
   T growth_in_max = T(1);
+  bool authors_damping = false;   // MdrOptions::damping == authors (pc.c_damp is then beta)
+  bool authors_friction = false;  // MdrOptions::friction == authors
+  T k_t_authors = T(0);           // MdrOptions::tangential_stiffness
   MdrGrowthState<T, Device> growth;  // bound by bind() when Eff::radius_growth
   // Deterministic mode: the growth terms (columns of growth.sums) per contact side, enabled by
   // begin_deterministic_pass; side 0 of a pair is the particle with the smaller global id.
@@ -314,12 +319,19 @@ struct Mdr {
       nf.k_n = T(2) * pc.E_star * a_sum * inv;
       if (Eff::damping) {
         nf.damping = pc.c_damp;
-        nf.damping_t = pc.c_damp;
+        nf.damping_t = authors_friction ? T(0) : pc.c_damp;
         nf.damp_compressive_only = true;
       }
       if (Eff::friction) {
-        nf.k_t = pc.kt_over_kn * nf.k_n;
+        nf.k_t = authors_friction ? k_t_authors : pc.kt_over_kn * nf.k_n;
         nf.mu = pc.mu;
+        nf.coulomb_on_damped = authors_friction;
+        nf.full_radius_arms = authors_friction;
+      }
+      if (Eff::damping && authors_damping) {
+        // MdrDamping::authors: k_n = E* R* with the current radii (after k_t, which uses MDR's)
+        nf.k_n = pc.E_star * g.R_eff;
+        nf.damp_may_pull = true;
       }
       *nf_out = nf;
     }
@@ -422,8 +434,22 @@ struct Mdr {
       for (int b = 0; b < m.nmat; ++b)
         hp(a * m.nmat + b) = (materials[a].rigid && materials[b].rigid)
                                  ? MdrPairConstants<T>{}
-                                 : mdr_pair_constants<T>(materials[a], materials[b], opt.yield_onset);
+                                 : mdr_pair_constants<T>(materials[a], materials[b], opt.yield_onset,
+                                                         opt.surface_energy_share);
     m.growth_in_max = opt.delta_max == MdrDeltaMax::running_max ? T(0) : T(1);
+    m.authors_friction = opt.friction == MdrFriction::authors;
+    m.k_t_authors = T(opt.friction == MdrFriction::authors ? opt.tangential_stiffness : 0.0);
+    m.authors_damping = opt.damping == MdrDamping::authors;
+    if (m.authors_damping)
+      for (int a = 0; a < m.nmat; ++a)
+        for (int b = 0; b < m.nmat; ++b) {
+          // beta = -ln e / sqrt(ln^2 e + pi^2) (the authors' code); e = 0: the limit 1, e = 1: 0
+          if (materials[a].rigid && materials[b].rigid) continue;
+          const double e = pair_properties(materials[a], materials[b]).restitution;
+          const double pi = constants<double>::pi;
+          const double beta = e <= 0.0 ? 1.0 : (e >= 1.0 ? 0.0 : -std::log(e) / std::sqrt(std::log(e) * std::log(e) + pi * pi));
+          hp(a * m.nmat + b).c_damp = T(beta);
+        }
     Kokkos::deep_copy(m.sides, hs);
     Kokkos::deep_copy(m.pairs, hp);
     m.growth.rule = opt.growth_rule;

@@ -62,6 +62,39 @@ enum class MdrDeltaMax {
   running_max
 };
 
+// How an MDR contact is damped (MdrOptions::damping; only with a restitution below 1).
+enum class MdrDamping {
+  // Default. c from the restitution by the exact Hertz relation, with k_n = 2 E* a-bar
+  // (mdr_model.hpp header), while the MDR force is compressive, never turning a push into a pull.
+  restitution_exact,
+  // The authors' code (LAMMPS gran_sub_mod_normal.cpp): F_d = -beta sqrt(m* k_n) v_n with
+  // beta = -ln e / sqrt(ln^2 e + pi^2) and k_n = E* R* (the pair's composite modulus; a wall:
+  // the particle's E_eff and R), while the mean MDR force is positive; F + F_d may pull. For
+  // comparisons with LAMMPS's `granular mdr`.
+  authors
+};
+// The tangential law of an MDR contact (MdrOptions::friction; only with friction mu > 0).
+enum class MdrFriction {
+  // Default. Mindlin's spring k_t = (4 G*/E*) k_n = 8 G* a-bar, damped with the normal
+  // coefficient, Coulomb bound mu |f| on the undamped MDR force.
+  mindlin,
+  // The authors' examples (LAMMPS `tangential linear_history k_t 0 mu`): a constant k_t
+  // (MdrOptions::tangential_stiffness), no tangential damping, Coulomb bound on the damped normal
+  // force, and LAMMPS's kinematics: the rolling part of the contact-point velocity with the full
+  // radii, a wall's torque arm R.
+  authors
+};
+
+// How a pair's surface energy Delta gamma is shared by its two sides (MdrOptions::surface_energy_share).
+enum class MdrSurfaceEnergyShare {
+  // Default. gamma_s = Delta gamma E*/E_eff,s: the sides' edge springs act in series, so an elastic
+  // pair reproduces JKR between the two spheres (mdr_model.hpp header).
+  series,
+  // The authors' code: each side gets the full Delta gamma (twice JKR's pull-off for two equal
+  // spheres). For comparisons with LAMMPS's `granular mdr`. Walls: Delta gamma either way.
+  each_side_full
+};
+
 struct MdrOptions {
   // xi of MDR (15): 1 = displacement control (Appendix E's choice), 3 = force control.
   int xi = 1;
@@ -69,6 +102,11 @@ struct MdrOptions {
   MdrYieldOnset yield_onset = MdrYieldOnset::elastic_law;
   MdrPairSplit pair_split = MdrPairSplit::balanced;
   MdrDeltaMax delta_max = MdrDeltaMax::paper_19;
+  MdrDamping damping = MdrDamping::restitution_exact;
+  MdrFriction friction = MdrFriction::mindlin;
+  MdrSurfaceEnergyShare surface_energy_share = MdrSurfaceEnergyShare::series;
+  // k_t [N/m] of MdrFriction::authors (the same for every pair); unused otherwise.
+  double tangential_stiffness = 0.0;
   // R never exceeds radius_cap * R_o (the authors' implementation stops growth at 1.5 R_o).
   double radius_cap = 1.5;
   // Guard of the denominator of MDR (37), D = 2 pi R sum(delta_o + R - R_o) - 4 pi R^2, which is
@@ -85,6 +123,9 @@ struct MdrOptions {
     require_range("mdr: radius_cap", radius_cap, 1.0, Bound::closed, 10.0, Bound::closed);
     require_range("mdr: denominator_floor", denominator_floor, 0.0, Bound::open, 1.0, Bound::open);
     require_range("mdr: volume_floor", volume_floor, 0.0, Bound::open, 1.0, Bound::open);
+    if (friction == MdrFriction::authors)
+      require_range("mdr: tangential_stiffness (friction authors)", tangential_stiffness, 0.0, Bound::open,
+                    std::numeric_limits<double>::max(), Bound::closed);
   }
 };
 
@@ -217,7 +258,8 @@ MdrSideConstants<T> mdr_side_constants(const Material& m, MdrYieldOnset onset) {
 // mdr_side_constants (onset: where the elastic regime ends).
 template <class T>
 MdrPairConstants<T> mdr_pair_constants(const Material& a, const Material& b,
-                                       MdrYieldOnset onset = MdrYieldOnset::elastic_law) {
+                                       MdrYieldOnset onset = MdrYieldOnset::elastic_law,
+                                       MdrSurfaceEnergyShare share = MdrSurfaceEnergyShare::series) {
   const PairProperties pp = pair_properties(a, b);  // host: rejects two rigid bodies
   MdrPairConstants<T> p;
   p.E_star = T(pp.E_star);
@@ -228,8 +270,10 @@ MdrPairConstants<T> mdr_pair_constants(const Material& a, const Material& b,
   p.side_a = a.rigid ? MdrSideConstants<T>{} : mdr_side_constants<T>(a, onset);
   p.side_b = b.rigid ? MdrSideConstants<T>{} : mdr_side_constants<T>(b, onset);
   // gamma_s = Delta gamma E* / E_eff,s (mdr_model.hpp header); E_eff > 0 for deformable sides
-  p.gamma_a = a.rigid ? T(0) : T(pp.surface_energy * pp.E_star / double(p.side_a.E_eff));
-  p.gamma_b = b.rigid ? T(0) : T(pp.surface_energy * pp.E_star / double(p.side_b.E_eff));
+  // (MdrSurfaceEnergyShare::each_side_full: Delta gamma on each side, the authors' code)
+  const bool full = share == MdrSurfaceEnergyShare::each_side_full;
+  p.gamma_a = a.rigid ? T(0) : T(full ? pp.surface_energy : pp.surface_energy * pp.E_star / double(p.side_a.E_eff));
+  p.gamma_b = b.rigid ? T(0) : T(full ? pp.surface_energy : pp.surface_energy * pp.E_star / double(p.side_b.E_eff));
   const std::string n = "mdr: pair '" + a.name + "'-'" + b.name + "': ";  // host
   const std::string from = "the two materials' moduli and surface energies";  // host
   require_representable<T>(n + "E_star", pp.E_star, from);
