@@ -22,6 +22,9 @@ const std::vector<ModelEntry>& model_registry() {
         choice_key("delta_max", {"paper_19", "running_max"}, 0),
         choice_key("damping", {"restitution_exact", "authors"}, 0),
         choice_key("friction", {"mindlin", "authors"}, 0),
+        choice_key("surface_energy_share", {"series", "each_side_full"}, 0),
+        choice_key("adhesive_radius", {"paper", "authors"}, 0),
+        choice_key("release", {"critical_overlap", "zero_overlap"}, 0),
         {"tangential_stiffness", 0.0, Bound::closed, inf, Bound::open, true, 0.0},  // k_t [N/m] of friction "authors"
         {"radius_cap", 1.0, Bound::closed, 10.0, Bound::closed, true, 1.5},         // R <= cap R_o
         {"denominator_floor", 0.0, Bound::open, 1.0, Bound::open, true, 0.05},     // guard of (37)

@@ -131,10 +131,11 @@ std::unique_ptr<ContactEngine> make_engine(Law law, const std::vector<Material>&
   if (radius_growth && law != Law::mdr)
     throw std::invalid_argument("epac plugin: radius growth is an MDR effect (fix epac/mdr needs pair_style epac/mdr)");
   if ((mdr.pair_split != 0 || mdr.delta_max != 0 || mdr.damping != 0 || mdr.friction != 0 || mdr.yield_onset != 0 ||
-       mdr.surface_energy_share != 0) &&
+       mdr.surface_energy_share != 0 || mdr.adhesive_radius != 0 ||
+       mdr.release != 0) &&
       law != Law::mdr)
-    throw std::invalid_argument("epac plugin: pair_split, delta_max, damping, friction, yield_onset and "
-                                "surface_energy_share are MDR options");
+    throw std::invalid_argument("epac plugin: pair_split, delta_max, damping, friction, yield_onset, "
+                                "surface_energy_share, adhesive_radius and release are MDR options");
   const unsigned e = effects_of(mats);
   MdrOptions mdr_opt;
   mdr_opt.pair_split = static_cast<MdrPairSplit>(mdr.pair_split);
@@ -144,6 +145,8 @@ std::unique_ptr<ContactEngine> make_engine(Law law, const std::vector<Material>&
   mdr_opt.tangential_stiffness = mdr.kt;
   mdr_opt.yield_onset = static_cast<MdrYieldOnset>(mdr.yield_onset);
   mdr_opt.surface_energy_share = static_cast<MdrSurfaceEnergyShare>(mdr.surface_energy_share);
+  mdr_opt.adhesive_radius = static_cast<MdrAdhesiveRadius>(mdr.adhesive_radius);
+  mdr_opt.release = static_cast<MdrRelease>(mdr.release);
   switch (law) {
     case Law::hertz_mindlin:
       return dispatch<HM, kFriction | kDamping>(e & (kFriction | kDamping), mats,

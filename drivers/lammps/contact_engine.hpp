@@ -64,11 +64,12 @@ class ContactEngine {
 // (where a pair's flat sits), delta_max, an epac::MdrDeltaMax value, damping and friction
 // (pair_style epac/mdr pair_split ... delta_max ... damping ... friction ...).
 // MDR only: epac::MdrPairSplit, MdrDeltaMax, MdrDamping, MdrFriction, MdrYieldOnset and
-// MdrSurfaceEnergyShare values, kt
+// MdrSurfaceEnergyShare, MdrAdhesiveRadius and MdrRelease values, kt
 // the k_t of MdrFriction::authors.
 // materials may end with rigid wall materials (fix epac/wall).
 struct MdrChoices {
-  int pair_split = 0, delta_max = 0, damping = 0, friction = 0, yield_onset = 0, surface_energy_share = 0;
+  int pair_split = 0, delta_max = 0, damping = 0, friction = 0, yield_onset = 0, surface_energy_share = 0,
+      adhesive_radius = 0, release = 0;
   double kt = 0.0;
 };
 std::unique_ptr<ContactEngine> make_engine(Law law, const std::vector<Material>& materials,

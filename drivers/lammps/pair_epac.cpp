@@ -88,7 +88,8 @@ void PairEpac::allocate()
 
 // pair_style epac/<law> [pair_split balanced|geometric] [delta_max paper_19|running_max]
 // [damping restitution_exact|authors] [friction mindlin|authors] [yield_onset elastic_law|hertz_40]
-// [surface_energy_share series|each_side_full] (epac/mdr only): pair_split
+// [surface_energy_share series|each_side_full] [adhesive_radius paper|authors]
+// [release critical_overlap|zero_overlap] (epac/mdr only): pair_split
 // places a pair's rigid flat where the sides' scaled forces balance (default, passive) or at the
 // authors' radical plane (geometric; not passive), epac::MdrPairSplit; delta_max is MDR (19)
 // (default) or the running maximum of the apparent overlap (the authors' code), epac::MdrDeltaMax;
@@ -96,7 +97,10 @@ void PairEpac::allocate()
 // friction authors = LAMMPS's `tangential linear_history kt 0 mu`, k_t from pair_coeff's kt);
 // yield_onset: where the elastic regime ends (epac::MdrYieldOnset; hertz_40 = MDR (41) read
 // literally, as the authors' code does); surface_energy_share: a pair's Delta gamma shared by the
-// sides in series (JKR between the spheres) or in full on each side (the authors' code). All
+// sides in series (JKR between the spheres) or in full on each side (the authors' code);
+// adhesive_radius: the stored adhesive radius a_na (paper) or 0.99 a_na (the authors' code);
+// release: an adhesive contact ends at its critical overlap (epac) or at zero overlap (the
+// authors' code). All
 // set to the authors' choices for comparisons with granular mdr.
 void PairEpac::settings(int narg, char **arg)
 {
@@ -106,13 +110,17 @@ void PairEpac::settings(int narg, char **arg)
   friction_ = 0;
   yield_onset_ = 0;
   energy_share_ = 0;
+  adhesive_radius_ = 0;
+  release_ = 0;
   struct Keyword { const char *name; int *value; std::vector<const char *> choices; };
   const Keyword keys[] = {{"pair_split", &pair_split_, {"balanced", "geometric"}},
                           {"delta_max", &delta_max_, {"paper_19", "running_max"}},
                           {"damping", &damping_, {"restitution_exact", "authors"}},
                           {"friction", &friction_, {"mindlin", "authors"}},
                           {"yield_onset", &yield_onset_, {"elastic_law", "hertz_40"}},
-                          {"surface_energy_share", &energy_share_, {"series", "each_side_full"}}};
+                          {"surface_energy_share", &energy_share_, {"series", "each_side_full"}},
+                          {"adhesive_radius", &adhesive_radius_, {"paper", "authors"}},
+                          {"release", &release_, {"critical_overlap", "zero_overlap"}}};
   for (int k = 0; k < narg; k += 2) {
     const Keyword *key = nullptr;
     for (const auto &kw : keys)
@@ -121,7 +129,8 @@ void PairEpac::settings(int narg, char **arg)
       error->all(FLERR, "Illegal pair_style {} command: {} (valid: {})", style_, arg[k],
                  law_ == Law::mdr ? "pair_split balanced|geometric, delta_max paper_19|running_max, "
                                     "damping restitution_exact|authors, friction mindlin|authors, "
-                                    "yield_onset elastic_law|hertz_40, surface_energy_share series|each_side_full"
+                                    "yield_onset elastic_law|hertz_40, surface_energy_share series|each_side_full, "
+                                    "adhesive_radius paper|authors, release critical_overlap|zero_overlap"
                                   : "no arguments");
     int found = -1;
     for (std::size_t q = 0; q < key->choices.size(); q++)
@@ -256,6 +265,8 @@ void PairEpac::init_style()
   choices.friction = friction_;
   choices.yield_onset = yield_onset_;
   choices.surface_energy_share = energy_share_;
+  choices.adhesive_radius = adhesive_radius_;
+  choices.release = release_;
   if (friction_ == 1) {  // MdrFriction::authors: one k_t for every pair
     choices.kt = kt_[0];
     for (int t = 0; t < atom->ntypes; t++)
@@ -614,21 +625,24 @@ void PairEpac::read_restart(FILE *fp)
 
 void PairEpac::write_restart_settings(FILE *fp)
 {
-  const int v[6] = {pair_split_, delta_max_, damping_, friction_, yield_onset_, energy_share_};
-  fwrite(v, sizeof(int), 6, fp);
+  const int v[8] = {pair_split_,   delta_max_,    damping_,         friction_,
+                    yield_onset_,  energy_share_, adhesive_radius_, release_};
+  fwrite(v, sizeof(int), 8, fp);
 }
 
 void PairEpac::read_restart_settings(FILE *fp)
 {
-  int v[6] = {0, 0, 0, 0, 0, 0};
-  if (comm->me == 0) utils::sfread(FLERR, v, sizeof(int), 6, fp, nullptr, error);
-  MPI_Bcast(v, 6, MPI_INT, 0, world);
+  int v[8] = {0, 0, 0, 0, 0, 0, 0, 0};
+  if (comm->me == 0) utils::sfread(FLERR, v, sizeof(int), 8, fp, nullptr, error);
+  MPI_Bcast(v, 8, MPI_INT, 0, world);
   pair_split_ = v[0];
   delta_max_ = v[1];
   damping_ = v[2];
   friction_ = v[3];
   yield_onset_ = v[4];
   energy_share_ = v[5];
+  adhesive_radius_ = v[6];
+  release_ = v[7];
 }
 
 double PairEpac::memory_usage()

@@ -58,6 +58,8 @@ class PairEpac : public Pair {
   int friction_ = 0;    // pair_style epac/mdr friction: epac::MdrFriction
   int yield_onset_ = 0; // pair_style epac/mdr yield_onset: epac::MdrYieldOnset
   int energy_share_ = 0;  // pair_style epac/mdr surface_energy_share: epac::MdrSurfaceEnergyShare
+  int adhesive_radius_ = 0;  // pair_style epac/mdr adhesive_radius: epac::MdrAdhesiveRadius
+  int release_ = 0;          // pair_style epac/mdr release: epac::MdrRelease
   std::vector<double> kt_;  // per type: pair_coeff keyword kt (MdrFriction::authors' k_t)
   // fix epac/wall: their contacts are evaluated in this pass; the engine's materials then end with
   // one rigid copy per wall fix and type (index ntypes + f ntypes + type - 1) for the wall side

@@ -12,7 +12,8 @@ and what epac needs:
   lammps_psi0:  the same with psi_b 0 (Part II's bulk response never triggers);
   epac:         plugin load epacplugin.so; pair_style epac/mdr with the authors' choices (pair_split
                 geometric delta_max running_max damping authors friction authors yield_onset
-                hertz_40); pair_coeff * * E nu Y gamma 0 CoR mu MU kt KT (psi_b 0: epac implements
+                hertz_40 surface_energy_share each_side_full adhesive_radius authors release
+                zero_overlap, the last three without effect here: no adhesion); pair_coeff * * E nu Y gamma 0 CoR mu MU kt KT (psi_b 0: epac implements
                 Part I, no bulk response); fix epac/mdr (radius growth); each fix wall/gran/region
                 replaced by fix epac/wall on the same region; the contact-area output of the
                 particle pair 1-12 (compute pair/local p13, granular only) removed.
@@ -41,19 +42,14 @@ far each moves the curves (why each convention is needed); no check.
 import argparse
 import os
 import re
-import shutil
-import subprocess
 import sys
-import tempfile
 
-DEFAULT_LMP = os.path.expanduser("~/.cache/epac/lammps/4Feb2025/build/lmp")
-DEFAULT_EXAMPLES = os.path.expanduser("~/.cache/epac/lammps/4Feb2025/src/lammps-4Feb2025/examples/granular")
+from authors_examples import (AUTHORS, DEFAULTS, add_common_arguments, build_no_penalty, prepare, read_rows,
+                              run_example)
+
 INPUT = "in.triaxial.compaction.12"
 DATA = "spheres12.data"
-AUTHORS = {"pair_split": "geometric", "delta_max": "running_max", "damping": "authors",
-           "friction": "authors", "yield_onset": "hertz_40"}
-DEFAULTS = {"pair_split": "balanced", "delta_max": "paper_19", "damping": "restitution_exact",
-            "friction": "mindlin", "yield_onset": "elastic_law"}
+SENSITIVITY_KEYS = ("pair_split", "delta_max", "damping", "friction", "yield_onset")  # the rest: adhesion (none here)
 
 
 def replace_once(text, old, new, what):
@@ -99,56 +95,10 @@ def epac_input(shipped, plugin, choices):
     return s
 
 
-NO_PENALTY_SOURCE = """// Diagnostic (compare_mdr_triaxial.py): LAMMPS's MDR without its contact penalty.
-#include "fix_granular_mdr.h"
-void LAMMPS_NS::FixGranularMDR::calculate_contact_penalty() {}
-"""
-
-
-def build_no_penalty(args):
-    src = os.path.join(args.workdir, "no_penalty.cpp")
-    lib = os.path.join(args.workdir, "no_penalty.so")
-    with open(src, "w") as f:
-        f.write(NO_PENALTY_SOURCE)
-    cxx = shutil.which("mpicxx") or shutil.which("mpic++")
-    if not cxx:
-        sys.exit("--lammps-src needs mpicxx (the MPI compiler that built LAMMPS)")
-    cmd = [cxx, "-shared", "-fPIC", "-O2", "-DLAMMPS_SMALLBIG", "-I", args.lammps_src,
-           "-I", os.path.join(args.lammps_src, "GRANULAR"), src, "-o", lib]
-    r = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-    if r.returncode != 0:
-        sys.exit(f"building the no-penalty diagnostic failed:\n{' '.join(cmd)}\n{r.stdout[-3000:]}")
-    return lib
-
-
 def run(args, label, text, ranks=1, preload=None):
-    work = os.path.join(args.workdir, label)
-    os.makedirs(work, exist_ok=True)
-    shutil.copy(os.path.join(args.examples, DATA), work)
-    with open(os.path.join(work, "in.run"), "w") as f:
-        f.write(text)
-    cmd = [args.mpirun, "--allow-run-as-root", "--oversubscribe", "-np", str(ranks)] if ranks > 1 else []
-    cmd += [args.lmp, "-in", "in.run", "-log", "log.lammps", "-screen", "none"]
-    env = dict(os.environ, OMP_NUM_THREADS="1")
-    if preload:
-        env["LD_PRELOAD"] = preload
-    r = subprocess.run(cmd, cwd=work, env=env, stdout=subprocess.PIPE,
-                       stderr=subprocess.STDOUT, text=True)
-    if r.returncode != 0:
-        log = os.path.join(work, "log.lammps")
-        tail = open(log).read()[-3000:] if os.path.exists(log) else ""
-        sys.exit(f"{label}: lmp failed ({r.returncode}):\n{r.stdout[-3000:]}\n{tail}")
-    rows = []
-    with open(os.path.join(work, "walls.csv")) as f:
-        for line in f:
-            if line.startswith("#") or not line.strip():
-                continue
-            rows.append([float(x) for x in line.split()])
-    psi = None
-    if os.path.exists(os.path.join(work, "psi.csv")):
-        with open(os.path.join(work, "psi.csv")) as f:
-            psi = [[float(x) for x in line.split()] for line in f if line.strip() and not line.startswith("#")]
-    return rows, psi
+    work = run_example(args, label, text, DATA, ranks=ranks, preload=preload)
+    psi_file = os.path.join(work, "psi.csv")
+    return read_rows(os.path.join(work, "walls.csv")), (read_rows(psi_file) if os.path.exists(psi_file) else None)
 
 
 WALLS = ("xy_neg (z)", "xz_neg (y)", "yz_neg (x)")
@@ -168,22 +118,15 @@ def compare(ref, other, upto):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--lmp", default=DEFAULT_LMP)
-    ap.add_argument("--plugin", required=True)
-    ap.add_argument("--examples", default=DEFAULT_EXAMPLES, help="LAMMPS's examples/granular folder")
+    add_common_arguments(ap)
     ap.add_argument("--mpirun", default="mpirun")
-    ap.add_argument("--workdir", default=None)
     ap.add_argument("--tol", type=float, default=0.01)
     ap.add_argument("--lammps-src", default=None, help="LAMMPS's src folder: adds check 3 (no contact penalty)")
     ap.add_argument("--tol-no-penalty", type=float, default=1e-3)
     ap.add_argument("--ranks", type=int, default=1)
     ap.add_argument("--sensitivity", action="store_true")
     args = ap.parse_args()
-    args.plugin = os.path.abspath(args.plugin)
-    if args.workdir is None:
-        args.workdir = tempfile.mkdtemp(prefix="epac_triaxial_")
-    os.makedirs(args.workdir, exist_ok=True)
-    shipped = open(os.path.join(args.examples, INPUT)).read()
+    shipped = prepare(args, INPUT, "epac_triaxial_")
 
     lmp_rows, psi = run(args, "lammps", lammps_input(shipped, None))
     psi0_rows, _ = run(args, "lammps_psi0", lammps_input(shipped, 0.0))
@@ -230,7 +173,7 @@ def main():
 
     if args.sensitivity:
         print("sensitivity: epac with one of the authors' choices back at epac's default, against psi_b 0, whole run")
-        for key in AUTHORS:
+        for key in SENSITIVITY_KEYS:
             choices = dict(AUTHORS)
             choices[key] = DEFAULTS[key]
             rows, _ = run(args, f"epac_{key}_default", epac_input(shipped, args.plugin, choices))

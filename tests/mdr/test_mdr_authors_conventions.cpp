@@ -2,6 +2,7 @@
 // conventions of the authors' code (LAMMPS gran_sub_mod_normal.cpp, gran_sub_mod_tangential.cpp
 // linear_history, granular_model.cpp), each checked in closed form against one pass of the
 // generic pair and wall kernels, next to epac's defaults.
+#include "contact_stepper.hpp"
 #include "mdr_test_helpers.hpp"
 
 #include <epac/state/walls.hpp>
@@ -204,4 +205,96 @@ TEST_CASE("MdrOptions: friction authors needs a finite positive tangential_stiff
   o.friction = MdrFriction::mindlin;  // unused otherwise
   o.tangential_stiffness = 0.0;
   CHECK_NOTHROW(o.validate());
+}
+
+TEST_CASE("Material::own_surface_properties: a rigid wall with its own friction, restitution and surface energy",
+          "[mdr][conventions]") {
+  Material p = mdr_material(5e6, 0.4, 1.9e5, 2.0, 0.5);
+  p.friction = 0.7;
+  Material w = rigid_wall_material();
+  w.friction = 0.1;
+  w.surface_energy = 0.0;
+  w.restitution = 0.9;
+  for (const bool own : {false, true}) {
+    w.own_surface_properties = own;
+    for (const PairProperties pp : {pair_properties(p, w), pair_properties(w, p)}) {
+      CHECK(pp.friction == (own ? 0.1 : 0.7));
+      CHECK(pp.surface_energy == (own ? 0.0 : 2.0));
+      CHECK(pp.restitution == (own ? 0.9 : 0.5));
+      CHECK(pp.E_star == Approx(5e6 / (1 - 0.16)).epsilon(1e-15));  // the wall stays rigid
+    }
+  }
+}
+
+TEMPLATE_TEST_CASE("MdrSurfaceEnergyShare, MdrAdhesiveRadius, MdrRelease: the authors' adhesion conventions",
+                   "[mdr][conventions]", double, float) {
+  using T = TestType;
+  using M = Mdr<T, Effects<kAdhesion>>;
+  const double E = 1e9, nu = 0.3, gamma = 0.5, R = 1e-3;
+  const Material m = mdr_material(E, nu, std::numeric_limits<double>::infinity(), gamma);
+  MdrOptions full;
+  full.surface_energy_share = MdrSurfaceEnergyShare::each_side_full;
+  const double Eeff = E / (1 - nu * nu);
+  // a pair of equal spheres: each side gets Delta gamma E*/E_eff = Delta gamma / 2 in series, the
+  // full Delta gamma with each_side_full; a wall side gets Delta gamma either way
+  const Material w = rigid_wall_material();
+  for (const bool all : {false, true}) {
+    const M model = all ? M::create({m, w}, full) : M::create({m, w});
+    auto pc = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), model.pairs);
+    CHECK(double(pc(0).gamma_a) == Approx(all ? gamma : gamma / 2).epsilon(1e-6));
+    CHECK(double(pc(1).gamma_a) == Approx(gamma).epsilon(1e-6));  // particle (row 0) against the wall
+  }
+  // The pull-off of two equal elastic spheres: JKR's 3/2 pi Delta gamma R* in series, twice that
+  // with the full surface energy on each side (each side is then JKR of one sphere on a flat
+  // with Delta gamma, mean of the two: 3/2 pi Delta gamma R), measured by slow retraction.
+  auto pull_off = [&](const M& model) {
+    ContactStepper<M> s(model, R, R, 0, 0);
+    double fmin = 0;
+    for (int k = 0; k <= 200; ++k) s.step(2e-6 * k / 200);
+    for (int k = 0; k <= 4000; ++k) fmin = std::min(fmin, s.step(2e-6 - 4e-6 * k / 4000));
+    return -fmin;
+  };
+  const double pi = 3.14159265358979323846;
+  const double series = pull_off(M::create({m}));
+  const double each = pull_off(M::create({m}, full));
+  CHECK(series == Approx(1.5 * pi * gamma * R / 2).epsilon(0.01));  // JKR between the spheres
+  CHECK(each == Approx(1.5 * pi * gamma * R).epsilon(0.01));        // twice (the authors' code)
+
+  // MdrAdhesiveRadius::authors: loading stores 0.99 a_na (the authors' a_fac); the paper: a_na.
+  // Elastic wall contact, A = 4R, B = 2R: a_na = (B/A) sqrt(d (A - d)).
+  MdrOptions fac;
+  fac.adhesive_radius = MdrAdhesiveRadius::authors;
+  const double d = 4e-5, a_na = 0.5 * std::sqrt(d * (4 * R - d));  // d/A = 1e-2: float resolves 1e-5 of F
+  const double tol = std::is_same<T, float>::value ? 1e-5 : 1e-12;
+  for (const bool authors : {false, true}) {
+    ContactStepper<M> s(authors ? M::create({m, w}, fac) : M::create({m, w}), R, -1.0, 0, 1);
+    for (int k = 1; k <= 10; ++k) s.step(d * k / 10);
+    CHECK(s.history()[M::side_base(0)] == Approx((authors ? 0.99 : 1.0) * a_na).epsilon(tol));
+    // unloading by 1.5% (a_na falls by 0.75%): with the paper's radius the edge springs are in
+    // tension at once, F = F_el(d) - 2 E (0.015 d) a, below the non-adhesive law by a second-order
+    // 8e-5 of it; the authors' 0.99 a_na keeps the contact free of tension until a_na has dropped
+    // by 1%, so the force is the non-adhesive ellipse force exactly
+    const double f = s.step(0.985 * d);
+    const double f_na = mdr_ellipse_force(Eeff, 4 * R, 2 * R, 0.985 * d);
+    if (authors) CHECK(f == Approx(f_na).epsilon(std::is_same<T, float>::value ? 1e-5 : 1e-10));
+    else CHECK(f < f_na * (1 - 2e-5));
+  }
+
+  // MdrRelease::zero_overlap: an adhesive pair pulled just apart (delta < 0, above the critical
+  // overlap) keeps its tension by default, and is released (no force, history cleared) by the
+  // authors' rule.
+  MdrOptions zero;
+  zero.release = MdrRelease::zero_overlap;
+  for (const bool authors : {false, true}) {
+    ContactStepper<M> s(authors ? M::create({m}, zero) : M::create({m}), R, R, 0, 0);
+    for (int k = 1; k <= 20; ++k) s.step(2e-6 * k / 20);
+    for (int k = 19; k >= 0; --k) s.step(2e-6 * k / 20);
+    const double f = s.step(-1e-9);
+    if (authors) {
+      CHECK(f == 0.0);
+      for (const double h : s.history()) CHECK(h == 0.0);
+    } else {
+      CHECK(f < 0.0);  // still held by the neck
+    }
+  }
 }

@@ -1,7 +1,7 @@
 // mdr in the driver (Zunker & Kamrin Part I, kernels/epac/models/mdr/): factory, dispatch and
 // scene check.
 // [model] keys: xi (1 or 3), growth_rule, yield_onset, pair_split, delta_max, damping, friction,
-// tangential_stiffness, radius_cap, denominator_floor, volume_floor (MdrOptions, mdr_parameters.hpp). Effects: adhesion (surface_energy > 0),
+// tangential_stiffness, surface_energy_share, adhesive_radius, release, radius_cap, denominator_floor, volume_floor (MdrOptions, mdr_parameters.hpp). Effects: adhesion (surface_energy > 0),
 // plasticity (finite yield_stress), radius growth (on with plasticity unless [model] effects
 // says otherwise), damping, friction.
 // Per step: the force pass adds each side's growth terms to the particle sums; after_forces
@@ -36,6 +36,9 @@ MdrOptions mdr_options(const Scene& s) {
   o.delta_max = static_cast<MdrDeltaMax>(choice_of(s, "delta_max"));
   o.damping = static_cast<MdrDamping>(choice_of(s, "damping"));
   o.friction = static_cast<MdrFriction>(choice_of(s, "friction"));
+  o.surface_energy_share = static_cast<MdrSurfaceEnergyShare>(choice_of(s, "surface_energy_share"));
+  o.adhesive_radius = static_cast<MdrAdhesiveRadius>(choice_of(s, "adhesive_radius"));
+  o.release = static_cast<MdrRelease>(choice_of(s, "release"));
   o.tangential_stiffness = s.model.params.at("tangential_stiffness");
   o.radius_cap = s.model.params.at("radius_cap");
   o.denominator_floor = s.model.params.at("denominator_floor");

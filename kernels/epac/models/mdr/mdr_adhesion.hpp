@@ -16,6 +16,9 @@
 //   root: d/da (g_1D - Delta l) > 0 there, Appendix A.3); no root there means separation.
 // - After separation a = 0; adhesion re-forms only once the indenter is pressed in again (d > 0
 //   gives a_na > 0 = a, the "no tensile springs" state).
+// - a_fac (MdrAdhesiveRadius::authors: 0.99, the authors' code; 1 by default): the no-tension
+//   state stores a = a_fac a_na, and a stored radius is used at most as a_fac B/2, so tension
+//   starts only once a_na has fallen below a_fac times its largest value.
 #include <epac/core/root_solve.hpp>
 #include <epac/models/mdr/mdr_ellipse.hpp>
 
@@ -86,8 +89,8 @@ struct MdrAdhesiveForce {
 // States 2-4 (springs in tension), kept out of the inlined hot path: a_na < a_old.
 template <class T>
 KOKKOS_INLINE_FUNCTION MdrAdhesiveForce<T> mdr_adhesive_force_tension(T E, T gamma, T xi, T A, T B, T d,
-                                                                      T a_old) {
-  const T a_stored = math::min(a_old, T(0.5) * B);  // a <= B/2 (guards the sqrt of (44))
+                                                                      T a_old, T a_fac = T(1)) {
+  const T a_stored = math::min(a_old, a_fac * T(0.5) * B);  // a <= B/2 (guards the sqrt of (44))
   const T g_old = mdr_ellipse_gap(A, B, a_stored);
   const T extension = g_old - d;  // > 0 here since a_na < a_old
   if (extension <= mdr_critical_extension(E, gamma, a_stored)) {
@@ -108,13 +111,13 @@ KOKKOS_INLINE_FUNCTION MdrAdhesiveForce<T> mdr_adhesive_force_tension(T E, T gam
 
 template <class T>
 KOKKOS_FORCEINLINE_FUNCTION MdrAdhesiveForce<T> mdr_adhesive_force(T E, T gamma, T xi, T A, T B, T d,
-                                                                   T a_old) {
+                                                                   T a_old, T a_fac = T(1)) {
   const T a_na = mdr_ellipse_contact_radius(A, B, d);
-  if (a_na >= a_old) {
+  if (a_na >= math::min(a_old, a_fac * T(0.5) * B)) {
     // state 1: no tensile springs, the non-adhesive law (a_na = 0 and d <= 0: no contact)
-    return {mdr_ellipse_force(E, A, B, d), a_na, kMdrNoTension};
+    return {mdr_ellipse_force(E, A, B, d), a_fac * a_na, kMdrNoTension};
   }
-  return mdr_adhesive_force_tension(E, gamma, xi, A, B, d, a_old);
+  return mdr_adhesive_force_tension(E, gamma, xi, A, B, d, a_old, a_fac);
 }
 
 }  // namespace epac

@@ -101,6 +101,8 @@ struct Mdr {
   bool authors_damping = false;   // MdrOptions::damping == authors (pc.c_damp is then beta)
   bool authors_friction = false;  // MdrOptions::friction == authors
   T k_t_authors = T(0);           // MdrOptions::tangential_stiffness
+  T adhesive_radius_factor = T(1);  // MdrOptions::adhesive_radius: 1 (paper) or 0.99 (authors)
+  bool release_at_zero_overlap = false;  // MdrOptions::release == zero_overlap
   MdrGrowthState<T, Device> growth;  // bound by bind() when Eff::radius_growth
   // Deterministic mode: the growth terms (columns of growth.sums) per contact side, enabled by
   // begin_deterministic_pass; side 0 of a pair is the particle with the smaller global id.
@@ -164,6 +166,8 @@ struct Mdr {
         a_adh_old[s] = row(side_base(s) + kPlasticFields);
         adhesive_hold = adhesive_hold || a_adh_old[s] > T(0);
       }
+    // (MdrRelease::zero_overlap, the authors' code: no hold, released at delta <= 0)
+    if (release_at_zero_overlap) adhesive_hold = false;
     if ((!(g.delta > T(0)) && !adhesive_hold) ||
         (Eff::adhesion && adhesive_hold && !(g.delta > T(0)) && g.delta < critical_overlap(g, row)))
       return released<Write>(g, row, nf_out);
@@ -235,6 +239,7 @@ struct Mdr {
         ps.start[s] = st[s];
       }
       ps.xi = xi;
+      ps.a_fac = adhesive_radius_factor;
       ps.delta = g.delta;
       ps.set_weights();
       // first guess: the geometric split; once a side yielded, the last pass's ratio (see
@@ -271,7 +276,8 @@ struct Mdr {
       }
     } else {
       const T gamma_w = Eff::adhesion ? pc.gamma_a : T(0);
-      res[0] = mdr_side_force<Eff::plasticity, Eff::adhesion>(pc.side_a, gamma_w, xi, dside[0], Rs[0], growth_of[0], st[0]);
+      res[0] = mdr_side_force<Eff::plasticity, Eff::adhesion>(pc.side_a, gamma_w, xi, dside[0], Rs[0], growth_of[0], st[0],
+                                                              adhesive_radius_factor);
     }
 
     T F = T(0), a_sum = T(0), area_sum = T(0), a_adh_sum = T(0);
@@ -440,6 +446,8 @@ struct Mdr {
     m.authors_friction = opt.friction == MdrFriction::authors;
     m.k_t_authors = T(opt.friction == MdrFriction::authors ? opt.tangential_stiffness : 0.0);
     m.authors_damping = opt.damping == MdrDamping::authors;
+    m.adhesive_radius_factor = T(opt.adhesive_radius == MdrAdhesiveRadius::authors ? 0.99 : 1.0);
+    m.release_at_zero_overlap = opt.release == MdrRelease::zero_overlap;
     if (m.authors_damping)
       for (int a = 0; a < m.nmat; ++a)
         for (int b = 0; b < m.nmat; ++b) {

@@ -165,6 +165,7 @@ struct MdrPairSides {
   const MdrSideConstants<T>* c[2];
   T gamma[2], R[2], growth[2], lambda[2];
   T xi, delta;
+  T a_fac = T(1);            // adhesive radius factor (MdrAdhesiveRadius)
   MdrSideState<T> start[2];  // the step's starting states
   MdrSideState<T> st[2];     // after the last evaluation
   MdrSideResult<T> r[2];     // of the last evaluation
@@ -183,7 +184,7 @@ struct MdrPairSides {
     d[1] = delta - d0;
     for (int s = 0; s < 2; ++s) {
       st[s] = start[s];
-      r[s] = mdr_side_force<Plasticity, Adhesion>(*c[s], gamma[s], xi, d[s], R[s], growth[s], st[s]);
+      r[s] = mdr_side_force<Plasticity, Adhesion>(*c[s], gamma[s], xi, d[s], R[s], growth[s], st[s], a_fac);
     }
     return lambda[0] * r[0].F - lambda[1] * r[1].F;
   }

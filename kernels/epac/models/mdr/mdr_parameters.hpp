@@ -95,6 +95,27 @@ enum class MdrSurfaceEnergyShare {
   each_side_full
 };
 
+// The adhesive contact radius a stored while no spring is in tension (MdrOptions::adhesive_radius,
+// mdr_adhesion.hpp).
+enum class MdrAdhesiveRadius {
+  // Default. a = a_na, the non-adhesive half-width: tension starts as soon as the contact unloads
+  // (the paper's rule; the pull-off force converges as the step shrinks).
+  paper,
+  // The authors' code: a = 0.99 a_na, used at most as 0.99 a_max, so unloading is free of tension
+  // until a_na has dropped by 1%. For comparisons with LAMMPS's `granular mdr`.
+  authors
+};
+
+// When an adhesive contact ends (MdrOptions::release).
+enum class MdrRelease {
+  // Default. Held while a side keeps an adhesive radius, released once the surfaces are apart by
+  // more than the contact's critical overlap (mdr_detachment.hpp): the neck of Section 6.
+  critical_overlap,
+  // The authors' code (LAMMPS `granular mdr` has no pull-off distance): released as soon as the
+  // apparent overlap is <= 0, adhesive or not. For comparisons with LAMMPS.
+  zero_overlap
+};
+
 struct MdrOptions {
   // xi of MDR (15): 1 = displacement control (Appendix E's choice), 3 = force control.
   int xi = 1;
@@ -105,6 +126,8 @@ struct MdrOptions {
   MdrDamping damping = MdrDamping::restitution_exact;
   MdrFriction friction = MdrFriction::mindlin;
   MdrSurfaceEnergyShare surface_energy_share = MdrSurfaceEnergyShare::series;
+  MdrAdhesiveRadius adhesive_radius = MdrAdhesiveRadius::paper;
+  MdrRelease release = MdrRelease::critical_overlap;
   // k_t [N/m] of MdrFriction::authors (the same for every pair); unused otherwise.
   double tangential_stiffness = 0.0;
   // R never exceeds radius_cap * R_o (the authors' implementation stops growth at 1.5 R_o).

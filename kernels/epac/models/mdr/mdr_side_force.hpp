@@ -105,7 +105,7 @@ struct MdrSideResult {
 
 // Evaluates one side and advances its state s (the caller writes s back, or not, e.g. for
 // outputs). gamma: the pair's Delta gamma (0: no adhesion); xi of (15); growth = R - R_o (0
-// without radius growth).
+// without radius growth); a_fac: the adhesive radius factor of mdr_adhesion.hpp (1: the paper).
 //
 // delta_max follows the paper's (19), delta_max = delta_o,max + R - R_o, with delta_o,max the
 // running maximum of delta_o = delta - (R - R_o), rather than the running maximum of delta
@@ -120,7 +120,8 @@ struct MdrSideResult {
 // costs one exp and two sqrt and no inverse trigonometric function; unloading adds the asin.
 template <bool Plasticity, bool Adhesion, class T>
 KOKKOS_FORCEINLINE_FUNCTION MdrSideResult<T> mdr_side_force(const MdrSideConstants<T>& c, T gamma, T xi,
-                                                            T delta, T R, T growth, MdrSideState<T>& s) {
+                                                            T delta, T R, T growth, MdrSideState<T>& s,
+                                                            T a_fac = T(1)) {
   MdrSideResult<T> out;
   const T pi = constants<T>::pi;
   // (MdrDeltaMax::running_max, the authors' running maximum of delta itself: the model passes
@@ -170,7 +171,7 @@ KOKKOS_FORCEINLINE_FUNCTION MdrSideResult<T> mdr_side_force(const MdrSideConstan
     out.area = math::max(pi * delta * R, T(0));  // (42), elastic branch
   }
   if (Adhesion && gamma > T(0)) {
-    const MdrAdhesiveForce<T> af = mdr_adhesive_force(c.E_eff, gamma, xi, out.A, out.B, out.d1De, s.a_adh);
+    const MdrAdhesiveForce<T> af = mdr_adhesive_force(c.E_eff, gamma, xi, out.A, out.B, out.d1De, s.a_adh, a_fac);
     out.F = af.F;
     out.a = af.a;
     out.adhesion_state = af.state;

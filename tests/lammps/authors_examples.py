@@ -1,0 +1,85 @@
+"""What compare_mdr_triaxial.py and compare_mdr_tableting.py share: running one of the MDR authors'
+example inputs shipped with LAMMPS (examples/granular/), epac's MDR settings that reproduce the
+authors' conventions, and the diagnostic build of LAMMPS without its contact penalty."""
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+
+DEFAULT_LMP = os.path.expanduser("~/.cache/epac/lammps/4Feb2025/build/lmp")
+DEFAULT_EXAMPLES = os.path.expanduser("~/.cache/epac/lammps/4Feb2025/src/lammps-4Feb2025/examples/granular")
+
+# pair_style epac/mdr's documented conventions set to the authors' choices (drivers/lammps/README.md),
+# and epac's defaults
+AUTHORS = {"pair_split": "geometric", "delta_max": "running_max", "damping": "authors",
+           "friction": "authors", "yield_onset": "hertz_40", "surface_energy_share": "each_side_full",
+           "adhesive_radius": "authors", "release": "zero_overlap"}
+DEFAULTS = {"pair_split": "balanced", "delta_max": "paper_19", "damping": "restitution_exact",
+            "friction": "mindlin", "yield_onset": "elastic_law", "surface_energy_share": "series",
+            "adhesive_radius": "paper", "release": "critical_overlap"}
+
+NO_PENALTY_SOURCE = """// Diagnostic (tests/lammps/authors_examples.py): LAMMPS's MDR without its contact penalty.
+#include "fix_granular_mdr.h"
+void LAMMPS_NS::FixGranularMDR::calculate_contact_penalty() {}
+"""
+
+
+def add_common_arguments(ap):
+    ap.add_argument("--lmp", default=DEFAULT_LMP)
+    ap.add_argument("--plugin", required=True)
+    ap.add_argument("--examples", default=DEFAULT_EXAMPLES, help="LAMMPS's examples/granular folder")
+    ap.add_argument("--workdir", default=None)
+
+
+def prepare(args, input_name, prefix):
+    """Absolute plugin path, a work folder; returns the shipped input's text."""
+    args.plugin = os.path.abspath(args.plugin)
+    if args.workdir is None:
+        args.workdir = tempfile.mkdtemp(prefix=prefix)
+    os.makedirs(args.workdir, exist_ok=True)
+    with open(os.path.join(args.examples, input_name)) as f:
+        return f.read()
+
+
+def build_no_penalty(args):
+    """Compiles the no-penalty library against LAMMPS's headers (args.lammps_src); returns its path.
+    Preloaded into lmp (LD_PRELOAD) it replaces FixGranularMDR::calculate_contact_penalty by a no-op."""
+    src = os.path.join(args.workdir, "no_penalty.cpp")
+    lib = os.path.join(args.workdir, "no_penalty.so")
+    with open(src, "w") as f:
+        f.write(NO_PENALTY_SOURCE)
+    cxx = shutil.which("mpicxx") or shutil.which("mpic++")
+    if not cxx:
+        sys.exit("--lammps-src needs mpicxx (the MPI compiler that built LAMMPS)")
+    cmd = [cxx, "-shared", "-fPIC", "-O2", "-DLAMMPS_SMALLBIG", "-I", args.lammps_src,
+           "-I", os.path.join(args.lammps_src, "GRANULAR"), src, "-o", lib]
+    r = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    if r.returncode != 0:
+        sys.exit(f"building the no-penalty diagnostic failed:\n{' '.join(cmd)}\n{r.stdout[-3000:]}")
+    return lib
+
+
+def read_rows(path):
+    with open(path) as f:
+        return [[float(x) for x in line.split()] for line in f if line.strip() and not line.startswith("#")]
+
+
+def run_example(args, label, text, data, ranks=1, preload=None):
+    """Runs `text` as in.run in workdir/label with the example's data file; returns that folder."""
+    work = os.path.join(args.workdir, label)
+    os.makedirs(work, exist_ok=True)
+    shutil.copy(os.path.join(args.examples, data), work)
+    with open(os.path.join(work, "in.run"), "w") as f:
+        f.write(text)
+    cmd = [args.mpirun, "--allow-run-as-root", "--oversubscribe", "-np", str(ranks)] if ranks > 1 else []
+    cmd += [args.lmp, "-in", "in.run", "-log", "log.lammps", "-screen", "none"]
+    env = dict(os.environ, OMP_NUM_THREADS="1")
+    if preload:
+        env["LD_PRELOAD"] = preload
+    r = subprocess.run(cmd, cwd=work, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    if r.returncode != 0:
+        log = os.path.join(work, "log.lammps")
+        tail = open(log).read()[-3000:] if os.path.exists(log) else ""
+        sys.exit(f"{label}: lmp failed ({r.returncode}):\n{r.stdout[-3000:]}\n{tail}")
+    return work
