@@ -35,7 +35,7 @@ Passes when both hold (each with a margin --factor for the ensemble's size):
     (D 0.34 against a bound 0.35), P does not (5.6 N against 7.6-8.3 N).
 Printed: D per phase, epac against LAMMPS with its contact penalty, and the lower punch force at
 the end, where epac stays systematically below LAMMPS (0.20 N against 0.33-0.35 N: the ejected
-tablet's grip on the die; see drivers/lammps/README.md).
+tablet's grip on the die; cause not found, see drivers/lammps/README.md).
 
   python3 tests/lammps/compare_mdr_tableting.py --plugin build/drivers/lammps/epacplugin.so \
       --lammps-src ~/.cache/epac/lammps/4Feb2025/src/lammps-4Feb2025/src
