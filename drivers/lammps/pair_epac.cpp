@@ -100,8 +100,7 @@ void PairEpac::allocate()
 // sides in series (JKR between the spheres) or in full on each side (the authors' code);
 // adhesive_radius: the stored adhesive radius a_na (paper) or 0.99 a_na (the authors' code);
 // release: an adhesive contact ends at its critical overlap (epac) or at zero overlap (the
-// authors' code). All
-// set to the authors' choices for comparisons with granular mdr.
+// authors' code). All set to the authors' choices for comparisons with granular mdr.
 void PairEpac::settings(int narg, char **arg)
 {
   pair_split_ = 0;
@@ -455,8 +454,9 @@ void PairEpac::build_contacts()
 // The wall contacts of this pass (fix epac/wall): one tangent plane per contact, material: the
 // fix's rigid copy of the atom type's (ntypes (1 + f) + type - 1), history rows from the fixes'
 // per-atom slots.
-void PairEpac::collect_walls(epac::lammps::WallPass &pass)
+void PairEpac::collect_walls()
 {
+  epac::lammps::WallPass &pass = walls_;
   wall_contacts_.clear();
   wall_owner_.clear();
   for (std::size_t f = 0; f < wall_fixes_.size(); f++) {
@@ -464,10 +464,16 @@ void PairEpac::collect_walls(epac::lammps::WallPass &pass)
     wall_owner_.resize(wall_contacts_.size(), static_cast<int>(f));
   }
   const int n = static_cast<int>(wall_contacts_.size());
-  pass.walls = epac::Walls<double>(n, "lammps.walls");
-  pass.list = epac::ContactList<>(n);
-  pass.history = epac::ContactHistory<double>(n, history_size_, "lammps.wall_history");
-  pass.buffer = epac::ContactForceBuffer<double, epac::DefaultDevice>(n);
+  // the views outlive the pass (no allocation per step): grown with headroom when the contacts
+  // outnumber them, the kernels read the first n rows (list.count)
+  if (n > pass.list.capacity() || pass.history.fields != history_size_) {
+    const int cap = n + n / 4 + 16;
+    pass.walls = epac::Walls<double>(cap, "lammps.walls");
+    pass.list = epac::ContactList<>(cap);
+    pass.history = epac::ContactHistory<double>(cap, history_size_, "lammps.wall_history");
+    pass.buffer = epac::ContactForceBuffer<double, epac::DefaultDevice>(cap);
+  }
+  pass.list.count = n;
   if (n == 0) return;
   auto pt = Kokkos::create_mirror_view(pass.walls.point);
   auto nv = Kokkos::create_mirror_view(pass.walls.normal);
@@ -493,8 +499,9 @@ void PairEpac::collect_walls(epac::lammps::WallPass &pass)
 
 // Wall forces and torques onto the atoms, into the fixes' per-atom output, and (non-setup
 // passes) the advanced history back into the fixes' slots.
-void PairEpac::apply_walls(const epac::lammps::WallPass &pass, bool advance)
+void PairEpac::apply_walls(bool advance)
 {
+  const epac::lammps::WallPass &pass = walls_;
   for (auto *f : wall_fixes_) f->clear_contact_output();
   const int n = static_cast<int>(wall_contacts_.size());
   if (n == 0) return;
@@ -550,10 +557,9 @@ void PairEpac::compute(int eflag, int vflag)
   // one of the step that wrote the history (LAMMPS's history_update = 0); a run continued from a
   // restart or a new `run` then retraces an uninterrupted one.
   const double dt = advance ? update->dt : 0.0;
-  epac::lammps::WallPass walls;
   const bool have_walls = !wall_fixes_.empty();
-  if (have_walls) collect_walls(walls);
-  const epac::lammps::WallPass *wp = have_walls ? &walls : nullptr;
+  if (have_walls) collect_walls();
+  const epac::lammps::WallPass *wp = have_walls ? &walls_ : nullptr;
   if (vflag_either) {
     epac::ContactForceBuffer<double, epac::DefaultDevice> buf(n);
     engine_->compute(contacts_, h, dt, buf, wp);
@@ -573,7 +579,7 @@ void PairEpac::compute(int eflag, int vflag)
     engine_->compute(contacts_, h, dt, {}, wp);
     add_forces(nlocal, newton);
   }
-  if (have_walls) apply_walls(walls, advance);
+  if (have_walls) apply_walls(advance);
   if (growth_) grow_radii(nlocal, advance);
   if (advance && history_size_ > 0) {
     auto hv = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), history_.data);

@@ -67,8 +67,9 @@ class PairEpac : public Pair {
   std::vector<double> wall_range_;  // per type (1..ntypes): the law's adhesive reach at a wall
   std::vector<FixEpacWall::Contact> wall_contacts_;
   std::vector<int> wall_owner_;      // per wall contact: its fix in wall_fixes_
-  void collect_walls(epac::lammps::WallPass &pass);
-  void apply_walls(const epac::lammps::WallPass &pass, bool advance);
+  epac::lammps::WallPass walls_;  // views kept between passes, reallocated only when they must grow
+  void collect_walls();
+  void apply_walls(bool advance);
   bool history_fix_made_ = false;
   double *onerad_ = nullptr, *maxrad_ = nullptr;  // per type: largest radius (local, global)
   // fix epac/mdr (MDR radius growth, epac/mdr only): its R_o and V feed the engine; null without it

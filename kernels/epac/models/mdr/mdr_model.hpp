@@ -98,7 +98,7 @@ struct Mdr {
   // MdrOptions::delta_max: 1 for MDR (19), delta_max shifted by R - R_o; 0 for the authors' running
   // maximum of delta (the sides then see no shift)
   T growth_in_max = T(1);
-  bool authors_damping = false;   // MdrOptions::damping == authors (pc.c_damp is then beta)
+  bool authors_damping = false;   // MdrOptions::damping == authors (pc.c_damp is then beta, mdr_pair_constants)
   bool authors_friction = false;  // MdrOptions::friction == authors
   T k_t_authors = T(0);           // MdrOptions::tangential_stiffness
   T adhesive_radius_factor = T(1);  // MdrOptions::adhesive_radius: 1 (paper) or 0.99 (authors)
@@ -441,23 +441,13 @@ struct Mdr {
         hp(a * m.nmat + b) = (materials[a].rigid && materials[b].rigid)
                                  ? MdrPairConstants<T>{}
                                  : mdr_pair_constants<T>(materials[a], materials[b], opt.yield_onset,
-                                                         opt.surface_energy_share);
+                                                         opt.surface_energy_share, opt.damping);
     m.growth_in_max = opt.delta_max == MdrDeltaMax::running_max ? T(0) : T(1);
     m.authors_friction = opt.friction == MdrFriction::authors;
     m.k_t_authors = T(opt.friction == MdrFriction::authors ? opt.tangential_stiffness : 0.0);
     m.authors_damping = opt.damping == MdrDamping::authors;
     m.adhesive_radius_factor = T(opt.adhesive_radius == MdrAdhesiveRadius::authors ? 0.99 : 1.0);
     m.release_at_zero_overlap = opt.release == MdrRelease::zero_overlap;
-    if (m.authors_damping)
-      for (int a = 0; a < m.nmat; ++a)
-        for (int b = 0; b < m.nmat; ++b) {
-          // beta = -ln e / sqrt(ln^2 e + pi^2) (the authors' code); e = 0: the limit 1, e = 1: 0
-          if (materials[a].rigid && materials[b].rigid) continue;
-          const double e = pair_properties(materials[a], materials[b]).restitution;
-          const double pi = constants<double>::pi;
-          const double beta = e <= 0.0 ? 1.0 : (e >= 1.0 ? 0.0 : -std::log(e) / std::sqrt(std::log(e) * std::log(e) + pi * pi));
-          hp(a * m.nmat + b).c_damp = T(beta);
-        }
     Kokkos::deep_copy(m.sides, hs);
     Kokkos::deep_copy(m.pairs, hp);
     m.growth.rule = opt.growth_rule;

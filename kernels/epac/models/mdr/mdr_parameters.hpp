@@ -186,7 +186,7 @@ template <class T>
 struct MdrPairConstants {
   T E_star;      // composite modulus of the two bodies (rigid wall: E_eff of the particle); k_n
   T kt_over_kn;  // 4 G*/E*: k_t = (4G*/E*) k_n = 8 G* a (Mindlin), Nan (22)
-  T c_damp;      // viscous coefficient from the restitution (exact Hertz relation)
+  T c_damp;      // viscous coefficient from the restitution (exact Hertz relation; MdrDamping::authors: beta)
   T mu;          // Coulomb friction coefficient
   T gamma;       // effective surface energy Delta gamma; 0 = no adhesion for this pair
   // The two materials' side constants (a: the row material, b: the column one; a rigid one is
@@ -282,12 +282,15 @@ MdrSideConstants<T> mdr_side_constants(const Material& m, MdrYieldOnset onset) {
 template <class T>
 MdrPairConstants<T> mdr_pair_constants(const Material& a, const Material& b,
                                        MdrYieldOnset onset = MdrYieldOnset::elastic_law,
-                                       MdrSurfaceEnergyShare share = MdrSurfaceEnergyShare::series) {
+                                       MdrSurfaceEnergyShare share = MdrSurfaceEnergyShare::series,
+                                       MdrDamping damping = MdrDamping::restitution_exact) {
   const PairProperties pp = pair_properties(a, b);  // host: rejects two rigid bodies
   MdrPairConstants<T> p;
   p.E_star = T(pp.E_star);
   p.kt_over_kn = T(4.0 * pp.G_star / pp.E_star);
-  p.c_damp = T(hertz_damping_coefficient(pp.restitution));
+  // MdrDamping::authors: beta = -ln e / sqrt(ln^2 e + pi^2), the linear-spring ratio of Nan (26)
+  p.c_damp = T(damping == MdrDamping::authors ? linear_damping_ratio(pp.restitution)
+                                               : hertz_damping_coefficient(pp.restitution));
   p.mu = T(pp.friction);
   p.gamma = T(pp.surface_energy);
   p.side_a = a.rigid ? MdrSideConstants<T>{} : mdr_side_constants<T>(a, onset);
