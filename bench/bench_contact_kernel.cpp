@@ -54,7 +54,7 @@ void BM_HertzOnly(benchmark::State& state) {  // no friction, no damping: what t
   run_contact_kernel(state, HertzMindlin<T, Effects<0>>::create({glass()}));
 }
 
-// Deterministic mode: per-contact buffer + per-particle sum in key order (design.md section 6).
+// Deterministic mode: per-contact buffer + per-particle sum in key order (docs/design.md section 6).
 // The incidence is built once per list rebuild, outside the timed loop, as in a simulation.
 template <class T>
 void BM_HertzMindlinDeterministic(benchmark::State& state) {

@@ -1,6 +1,6 @@
 # Kokkos: an installed one that has the OpenMP backend (or a GPU backend) if find_package finds
 # one; otherwise Kokkos 3.4.01 (OpenMP + Serial) bootstrapped from Debian's trilinos source
-# package by cmake/bootstrap-kokkos.sh into a cache prefix (design.md section 10).
+# package by cmake/bootstrap-kokkos.sh into a cache prefix (docs/design.md section 10).
 find_package(Kokkos QUIET)
 set(_epac_kokkos_ok FALSE)
 if(Kokkos_FOUND)

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Bootstraps Kokkos 3.4.01 (OpenMP + Serial) from Debian's trilinos source package into a cache
-# prefix, when no Kokkos with OpenMP is installed (design.md section 10). Prints the prefix.
+# prefix, when no Kokkos with OpenMP is installed (docs/design.md section 10). Prints the prefix.
 #
 # apt-get source needs deb-src entries. We derive them at run time from this machine's own apt
 # configuration into a private sources dir and a private state dir, so the system configuration

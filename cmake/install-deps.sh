@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Installs epac's Debian dependencies when missing (design.md section 10). Idempotent: when
+# Installs epac's Debian dependencies when missing (docs/design.md section 10). Idempotent: when
 # every package is already present it does nothing and asks no registry.
 # Extra package names given as arguments are installed too (drivers/lammps/build.sh: Open MPI).
 set -euo pipefail

@@ -1,6 +1,6 @@
 #pragma once
 // Contact detection on the device with a skin (Verlet-list style), and the history remap that
-// follows each rebuild (design.md section 4, steps 1-2).
+// follows each rebuild (docs/design.md section 4, steps 1-2).
 //  - pairs (i < j) with |x_i - x_j| < R_i + R_j + skin, from the cell list;
 //  - particle-wall contacts with signed distance to the plane < R_i + skin.
 // Lists come out ordered by i (then by cell, then by j; walls by wall index), the same on every

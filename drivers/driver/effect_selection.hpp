@@ -1,5 +1,5 @@
 #pragma once
-// The active effect set of a scene (design.md section 5): derived from the materials, masked by
+// The active effect set of a scene (docs/design.md section 5): derived from the materials, masked by
 // what the model implements, or overridden in [model] effects. Also the storage it implies.
 #include <epac/models/effects.hpp>
 #include <epac/params/material.hpp>

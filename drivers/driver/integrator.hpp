@@ -1,5 +1,5 @@
 #pragma once
-// Velocity-Verlet integration of translation and rotation (design.md section 4, step 5):
+// Velocity-Verlet integration of translation and rotation (docs/design.md section 4, step 5):
 //   v += dt/2 (F/m + g),  omega += dt/2 torque / I     (half kick, from the forces of the last pass)
 //   x += dt v                                          (drift; in kick_drift)
 //   ... contact detection, forces ...

@@ -1,6 +1,6 @@
 #pragma once
 // One run of a scene with one compiled (model, effects, scalar) instance: device state, contact
-// detection with a skin, velocity-Verlet steps, outputs (design.md section 4).
+// detection with a skin, velocity-Verlet steps, outputs (docs/design.md section 4).
 #include "driver/box_motion.hpp"
 #include "driver/contact_detection.hpp"
 #include "driver/contact_sampling.hpp"

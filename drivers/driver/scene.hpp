@@ -116,7 +116,7 @@ struct ModelSpec {
   std::string name = "hertz_mindlin";
   std::map<std::string, double> params;  // model-specific keys (model_registry.cpp lists them)
   bool effects_overridden = false;
-  unsigned derived_effects = 0;  // from the materials (design.md section 5)
+  unsigned derived_effects = 0;  // from the materials (docs/design.md section 5)
   unsigned effects = 0;          // the active set: derived (masked by the model) or the override
   std::vector<std::string> notes;  // e.g. effects the model ignores
 };

@@ -112,7 +112,7 @@ template <class Eff> using JKR = Jkr<double, Eff>;
 template <class Eff> using NAN22 = Nan2022<double, Eff>;
 template <class Eff> using MDR = Mdr<double, Eff>;
 
-// The effects the coefficients call for (design.md section 5).
+// The effects the coefficients call for (docs/design.md section 5).
 unsigned effects_of(const std::vector<Material>& mats) {
   unsigned e = 0;
   for (const auto& m : mats) {

@@ -52,7 +52,7 @@ struct MdrFactory : ModelFactoryBase<Mdr<T, Effects<Bits>, Device>> {
   using model_type = Mdr<T, Effects<Bits>, Device>;
   static model_type create(const Scene& s) { return model_type::create(s.materials, mdr_options(s)); }
   static void bind(model_type& m, const Particles<T, Device>& p) { m.bind(p); }
-  // MDR (37)-(39): the apparent radii and volumes from this pass's sums (design.md section 4 step 4).
+  // MDR (37)-(39): the apparent radii and volumes from this pass's sums (docs/design.md section 4 step 4).
   static void after_forces(const model_type& m, const Particles<T, Device>&, T) { m.update_radii(); }
   // [run] spatial_sort: the growth state is per particle (R, R_o are the particles' views).
   template <class Permute>

@@ -1,5 +1,5 @@
 #pragma once
-// The contact kernel (design.md section 4, step 3): one thread per contact computes geometry,
+// The contact kernel (docs/design.md section 4, step 3): one thread per contact computes geometry,
 // the model's normal law, damping and the tangential spring, then adds force and torque into
 // both particles through ForceSums (compute/particle_sums.hpp: per-thread copies on CPUs,
 // atomics on GPUs). Model is any law with the interface of models/hertz_mindlin.hpp;
@@ -24,7 +24,7 @@ struct ContactOutputs {
   Kokkos::View<T*, Device> overlap;       // delta
 };
 
-// Deterministic mode (design.md section 6): when `force` is allocated, the kernel stores each
+// Deterministic mode (docs/design.md section 6): when `force` is allocated, the kernel stores each
 // contact's force on its listed first particle (c.first(k)) and the torques on first and second
 // here instead of adding them to the sums; compute/deterministic_reduce.hpp then sums them per
 // particle in a fixed order. The pair kernel then evaluates every pair in the orientation of the

@@ -1,5 +1,5 @@
 #pragma once
-// The deterministic mode of a whole force pass (design.md section 6), for a host that evaluates a
+// The deterministic mode of a whole force pass (docs/design.md section 6), for a host that evaluates a
 // pair list and a wall list per step: per-contact force buffers, the lists' incidences, and the
 // model's own per-particle sums (MDR radius growth) stored per contact side. Use:
 //   DeterministicPass<T, Device> det;

@@ -1,5 +1,5 @@
 #pragma once
-// Deterministic accumulation (design.md section 6). The contact kernel stores per-contact forces
+// Deterministic accumulation (docs/design.md section 6). The contact kernel stores per-contact forces
 // in a ContactForceBuffer; here each particle sums its contacts sequentially, in the order of
 // the contacts' history keys. The order depends neither on the thread count nor on the order of
 // the contact list, so a run gives the same bits on any number of threads.

@@ -1,5 +1,5 @@
 #pragma once
-// History remap across contact-list rebuilds (design.md section 4, step 2), on the device:
+// History remap across contact-list rebuilds (docs/design.md section 4, step 2), on the device:
 // sort the old keys (BinSort, permutation only), binary-search each new contact's key, copy its
 // row. New contacts start from zero; vanished ones are dropped.
 #include <epac/params/validation.hpp>

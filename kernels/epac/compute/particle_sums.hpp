@@ -1,5 +1,5 @@
 #pragma once
-// Per-particle accumulation of a force pass (design.md section 6): force, torque and any per-particle
+// Per-particle accumulation of a force pass (docs/design.md section 6): force, torque and any per-particle
 // sum a model adds (the MDR growth sums). Each contact adds to two particles that other threads
 // also add to, so the sums need one of two strategies, chosen at compile time from the execution
 // space:

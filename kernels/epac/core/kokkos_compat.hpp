@@ -1,5 +1,5 @@
 #pragma once
-// Kokkos compatibility shim (design.md section 9): one spelling for everything that moved
+// Kokkos compatibility shim (docs/design.md section 9): one spelling for everything that moved
 // between Kokkos 3.4 and 5.x. Kernels use epac::math::* and epac::host_mirror_t, never the
 // version-specific names.
 #include <Kokkos_Core.hpp>

@@ -1,5 +1,5 @@
 #pragma once
-// The physical effects a contact kernel computes, as a compile-time set (design.md section 5).
+// The physical effects a contact kernel computes, as a compile-time set (docs/design.md section 5).
 // A disabled effect compiles to nothing and its history fields are not allocated.
 namespace epac {
 

@@ -1,5 +1,5 @@
 #pragma once
-// Per-contact history, structure of arrays (design.md section 3): a (contacts x fields) LayoutLeft
+// Per-contact history, structure of arrays (docs/design.md section 3): a (contacts x fields) LayoutLeft
 // view, so each field is contiguous over contacts, plus the contacts' keys for the remap
 // (one per row; a history built without keys cannot be remapped).
 // A model declares how many fields it needs for the effects it has on; zero fields allocate

@@ -1,5 +1,5 @@
 #pragma once
-// Contact lists (design.md section 3): particle-particle pairs (i, j) and particle-wall
+// Contact lists (docs/design.md section 3): particle-particle pairs (i, j) and particle-wall
 // contacts (i, wall). `count` is the number of valid entries; views may be larger (capacity).
 #include <epac/core/kokkos_compat.hpp>
 

@@ -1,5 +1,5 @@
 #pragma once
-// Particle state, structure of arrays (design.md section 3). Each vector quantity is an
+// Particle state, structure of arrays (docs/design.md section 3). Each vector quantity is an
 // (n x 3) LayoutLeft view, so each component is contiguous.
 #include <epac/core/kokkos_compat.hpp>
 #include <epac/state/periodic_box.hpp>

@@ -1,5 +1,5 @@
 #pragma once
-// Analytic plane walls (design.md section 3): a point on the plane, a unit normal pointing into
+// Analytic plane walls (docs/design.md section 3): a point on the plane, a unit normal pointing into
 // the domain (towards the particles it touches), a velocity and a material id.
 #include <epac/core/kokkos_compat.hpp>
 

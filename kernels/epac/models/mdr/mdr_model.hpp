@@ -36,7 +36,7 @@
 //   radius stays.
 // - Radius growth: each side's terms go to the particle sums (mdr_radius_growth.hpp; per-thread
 //   copies on host backends, atomics on GPUs); call bind(particles) once and update_radii() after
-//   every force pass (design.md section 4 step 4); update_radii also clears the copies for the
+//   every force pass (docs/design.md section 4 step 4); update_radii also clears the copies for the
 //   next pass, so no begin call is needed. Deterministic mode (compute/deterministic_pass.hpp):
 //   the terms are stored per contact side (growth_terms) and added per particle in key order.
 #include <epac/compute/contact_side_sums.hpp>

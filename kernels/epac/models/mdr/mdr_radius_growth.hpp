@@ -4,7 +4,7 @@
 // elastic volume change. The force pass adds each side's terms to per-particle sums
 // (mdr_growth_add_side) through the accumulation policy of compute/particle_sums.hpp (per-thread
 // copies on host backends, atomics on GPUs); a per-particle kernel then applies them and resets
-// the sums (mdr_update_radii, design.md section 4 step 4).
+// the sums (mdr_update_radii, docs/design.md section 4 step 4).
 //
 // Sequence for a host: attach() (Mdr::bind) once; then per step the force pass(es), then
 // mdr_update_radii (Mdr::update_radii). mdr_update_radii takes each particle's sums (the values in
