@@ -1,5 +1,5 @@
 // STREAM-like triad a(i) = b(i) + s c(i) on the Kokkos default execution space, and the bytes per
-// contact-step of each contact kernel, so the README can say what fraction of the machine's
+// contact-step of each contact kernel, so docs/performance.md can say what fraction of the machine's
 // bandwidth each law reaches (bytes per contact-step x contact-steps per second / triad GB/s).
 //
 //   epac-stream-triad [--json FILE] [--repeats N]

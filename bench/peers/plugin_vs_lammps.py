@@ -1,10 +1,12 @@
 #!/usr/bin/env python3
 """epac's LAMMPS plugin styles against LAMMPS's own styles, in LAMMPS, on its fcc scene, in one run.
 
-The scene is ../shared/peers/lammps/in.fcc_compress_model unchanged (fcc packing of polydisperse
-spheres, 0.94-0.99 R, fully periodic, compressed to 0.88 linear in 500 steps, then held 200 steps;
-`newton off`, as LAMMPS's MDR requires); only the included pair file differs: LAMMPS's
-(../shared/peers/lammps/pair.*) or the plugin's (bench/peers/lammps_plugin/pair.epac_*).
+The scene is LAMMPS's fcc compression benchmark input, in.fcc_compress_model, unchanged (fcc
+packing of polydisperse spheres, 0.94-0.99 R, fully periodic, compressed to 0.88 linear in 500
+steps, then held 200 steps; `newton off`, as LAMMPS's MDR requires); only the included pair file
+differs: LAMMPS's (pair.*) or the plugin's (bench/peers/lammps_plugin/pair.epac_*). The input and
+LAMMPS's pair files are copied in bench/peers/lammps/ (see its README.md); this script runs the
+copies of the LAMMPS peer kit supplied to developers beside the checkout (PEERS below).
 Timed: the hold phase (the last `run`), its loop time and its Pair time, per active contact and
 step, on 1 and 2 MPI ranks (1 OpenMP thread each). Runs alternate LAMMPS/epac per law and the best
 of --repeats is kept: compare the ratios of one run.

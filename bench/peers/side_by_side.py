@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """epac against LAMMPS 4Feb2025 on LAMMPS's own fcc benchmark scene, in one run, side by side.
 
-The scene (../shared/peers/lammps/in.fcc_compress_model; epac: bench/peers/fcc_compress.toml):
+The scene (LAMMPS's in.fcc_compress_model, copied in bench/peers/lammps/; epac: bench/peers/fcc_compress.toml):
 10,976 spheres on an fcc lattice in a fully periodic box, compressed by an affine box deformation
 to 0.88 (linear) in 500 steps, then held 200 steps; about 65,856 contacts in the hold phase. Both
 codes are timed on the hold phase only (LAMMPS: the loop time of its last `run`; epac: the
@@ -14,8 +14,9 @@ across runs). Prints a markdown table and writes JSON (--json).
 Usage:
   python3 bench/peers/side_by_side.py [--threads 1 2] [--repeats 3] [--laws hm jkr nan mdr mdr_growth]
                                       [--precision double float] [--json FILE] [--quick]
-LAMMPS is built on first use (about 2-5 min; cached in ~/.cache/lammps-peer) with the scripts in
-../shared/peers/lammps; epac-run is taken from $EPAC_BUILD_DIR (default build/) and built if missing.
+LAMMPS is built on first use (about 2-5 min; cached in ~/.cache/lammps-peer) with the build scripts
+of the LAMMPS peer kit supplied to developers beside the checkout (PEERS below; the kit's inputs
+are copied in bench/peers/lammps/, see its README.md); epac-run is taken from $EPAC_BUILD_DIR (default build/) and built if missing.
 """
 import argparse
 import csv

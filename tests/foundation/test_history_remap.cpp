@@ -84,7 +84,7 @@ TEMPLATE_LIST_TEST_CASE("remap of a large shuffled list keeps every row", "[rema
   CHECK(wrong == 0);
 }
 
-// The README's host loop: a history built from the contact list's keys keeps its rows through a
+// docs/install.md's host program: a history built from the contact list's keys keeps its rows through a
 // remap with the identical list (the keyless form used to come back all zero, silently).
 TEMPLATE_LIST_TEST_CASE("a keyed history survives a remap with the same list, a keyless one is refused",
                         "[remap]", test::Backends) {

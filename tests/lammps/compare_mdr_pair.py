@@ -10,7 +10,7 @@ same steps: max |F_epac - F_lammps| / peak |F_lammps|.
     geometric delta_max running_max yield_onset hertz_40): every case within 1% (asserted);
   - epac's defaults (balanced split, delta_max by (19)): elastic cases and equal radii within 1%
     (asserted); plastic unequal pairs printed (the balance departs from the radical plane at
-    first order once the sides yield: README "MDR conventions").
+    first order once the sides yield: docs/models.md "MDR conventions").
   python3 tests/lammps/compare_mdr_pair.py --lmp LMP --plugin epacplugin.so [--workdir DIR]
 """
 import argparse

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Validation of the LAMMPS plugin (drivers/lammps/) inside LAMMPS itself (issue 8), run by ctest.
+"""Validation of the LAMMPS plugin (drivers/lammps/) inside LAMMPS itself (docs/lammps.md), run by ctest.
 
   lammps_checks.py --lmp LMP --plugin epacplugin.so [--mpiexec MPIEXEC] --work DIR CHECK
 
@@ -118,7 +118,7 @@ def hm_vs_granular(args):
     # Gamma = 0.1 against cohesion 0.05. On the settled packing (no history: a pair is in contact
     # iff it overlaps) the forces agree to round-off. Later steps are not compared: LAMMPS lets go
     # at the overlap of force-controlled pull-off, -1.23 (R* gamma^2 / E*^2)^(1/3), epac at JKR's
-    # displacement-controlled critical overlap, -2.55 (same units) (README), and LAMMPS marks
+    # displacement-controlled critical overlap, -2.55 (same units) (drivers/lammps/README.md), and LAMMPS marks
     # touching pairs in its setup pass, epac in the first step.
     for name, style, coeffs in (("lammps_jkr", "granular", "jkr 1e7 0 0.3 0.05 tangential linear_nohistory 0 0"),
                                 ("epac_jkr", "epac/jkr", "1e7 0.3 1 0 0.1")):
@@ -127,7 +127,7 @@ def hm_vs_granular(args):
     rel, big = max_rel(read_dump(os.path.join(args.work, "epac_jkr.0.dump")),
                        read_dump(os.path.join(args.work, "lammps_jkr.0.dump")), (6, 7, 8))
     check(rel < 1e-12, f"JKR, step 0: max |F_epac - F_lammps| / max |F| = {rel:.2e} (max |F| {big:.3e} N) < 1e-12")
-    # Not asserted: what the unmatched damping and tangential conventions change (README)
+    # Not asserted: what the unmatched damping and tangential conventions change (drivers/lammps/README.md)
     for label, g, e in (("damping e = 0.5 (LAMMPS: damping coeff_restitution)",
                          "hertz/material 1e7 0.5 0.3 tangential linear_nohistory 0 0 damping coeff_restitution",
                          "1e7 0.3 0.5 0"),

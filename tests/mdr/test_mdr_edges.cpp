@@ -1,4 +1,4 @@
-// MDR at the edges issue 10 named after the pair split was fixed: the area terms near and past
+// MDR at the edges found after the pair split was fixed (docs/stability.md): the area terms near and past
 // delta = R, the radius-growth guards with the smallest floors `MdrOptions` accepts, and pairs of
 // materials with very unequal surface energies. Each drives a guarded expression to its edge and
 // asserts finite, bounded results and the physical invariants that still hold there.

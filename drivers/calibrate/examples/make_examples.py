@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
-"""Writes the example curves of epac-calibrate from Nan et al. 2022 Table 2 (issue 4's cleaned
-digitised numbers). These are RECONSTRUCTED curves, not measured data: each curve is the
-piecewise-linear path that has exactly Table 2's f_max, alpha_max, alpha_p and f_cp.
+"""Writes the example curves of epac-calibrate from Nan et al. 2022 Table 2 (the paper's
+digitised numbers, cleaned where the digitised text was garbled). These are RECONSTRUCTED
+curves, not measured data: each curve is the piecewise-linear path that has exactly Table 2's
+f_max, alpha_max, alpha_p and f_cp.
 
   loading    the common envelope through (0, 0) and the peaks (alpha_max, f_max) of the curves,
              followed up to this curve's own peak (so consecutive peaks give Nan (51)'s k_p)
@@ -22,7 +23,7 @@ CASES = {
     "du": dict(ratio=3.9, curves=[(8584.4, 53.7, 33.4, 321.5), (5170.7, 35.7, 20.2, 239.7),
                                   (2132.2, 17.9, 8.2, 170.8)]),
 }
-HEADER = ("# Reconstructed from Nan et al. 2022 Table 2 ({case}; digitised values, cleaned in issue 4),\n"
+HEADER = ("# Reconstructed from Nan et al. 2022 Table 2 ({case}; digitised values, cleaned where garbled),\n"
           "# NOT measured data: piecewise-linear loading envelope through the peaks, unloading line of\n"
           "# Nan (50) through alpha_p, pull-off at -f_cp, illustrative cohesive tail. See make_examples.py.\n"
           "# Units: overlap nm, force uN (epac-calibrate --overlap-unit nm --force-unit uN).\n")

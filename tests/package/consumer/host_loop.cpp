@@ -1,6 +1,6 @@
 // A complete host program: the host owns particles, neighbour search and integration; epac
-// computes contact forces. The README shows this file verbatim (a test compares them) and the
-// test install_and_find_package builds and runs it against an installed, moved epac.
+// computes contact forces. docs/install.md shows this file verbatim (a test compares them) and
+// the test install_and_find_package builds and runs it against an installed, moved epac.
 #include <epac/compute/contact_forces.hpp>
 #include <epac/compute/history_remap.hpp>
 #include <epac/core/build_info.hpp>
