@@ -5,19 +5,23 @@
 #include "driver/contact_detection.hpp"
 #include "driver/contact_sampling.hpp"
 #include "driver/diagnostics.hpp"
+#include "driver/driven_motion.hpp"
 #include "driver/effect_selection.hpp"
 #include "driver/guard_warning.hpp"
 #include "driver/initial_history.hpp"
 #include "driver/integrator.hpp"
 #include "driver/model_factory.hpp"
 #include "driver/outputs.hpp"
+#include "driver/particle_state.hpp"
 #include "driver/phase_times.hpp"
 #include "driver/run_options.hpp"
+#include "driver/run_stats.hpp"
 #include "driver/scene.hpp"
 #include "driver/snapshot_capture.hpp"
 #include "driver/snapshot_writer.hpp"
 #include "driver/spatial_sort.hpp"
 #include "driver/stop_signal.hpp"
+#include "driver/wall_driver.hpp"
 
 #include <epac/compute/contact_forces.hpp>
 #include <epac/compute/deterministic_pass.hpp>
@@ -32,352 +36,237 @@
 #include <csignal>
 #include <cstdio>
 #include <memory>
+#include <optional>
+#include <string>
 #include <type_traits>
+#include <vector>
 
 namespace epac {
 namespace driver {
 
-// Device particle state from the scene's particles.
-template <class T, class Device>
-Particles<T, Device> make_particles(const Scene& s, Kokkos::View<unsigned char*, Device>& driven) {
-  const int n = static_cast<int>(s.particles.size());
-  Particles<T, Device> p(n);
-  driven = Kokkos::View<unsigned char*, Device>("epac::driver::driven", n);
-  auto x = Kokkos::create_mirror_view(p.x);
-  auto v = Kokkos::create_mirror_view(p.v);
-  auto w = Kokkos::create_mirror_view(p.omega);
-  auto m = Kokkos::create_mirror_view(p.mass);
-  auto I = Kokkos::create_mirror_view(p.inertia);
-  auto r0 = Kokkos::create_mirror_view(p.radius0);
-  auto mat = Kokkos::create_mirror_view(p.material);
-  auto gid = Kokkos::create_mirror_view(p.gid);
-  auto dr = Kokkos::create_mirror_view(driven);
-  for (int i = 0; i < n; ++i) {
-    const ParticleSpec& q = s.particles[i];
-    const double mass = sphere_mass(s.materials[q.material].density, q.radius);
-    for (int d = 0; d < 3; ++d) {
-      x(i, d) = T(q.position[d]);
-      v(i, d) = T(q.velocity[d]);
-      w(i, d) = T(q.angular_velocity[d]);
-    }
-    m(i) = T(mass);
-    I(i) = T(0.4 * mass * q.radius * q.radius);
-    r0(i) = T(q.radius);
-    mat(i) = q.material;
-    gid(i) = i;
-    dr(i) = q.driven ? 1 : 0;
-  }
-  Kokkos::deep_copy(p.x, x);
-  Kokkos::deep_copy(p.v, v);
-  Kokkos::deep_copy(p.omega, w);
-  Kokkos::deep_copy(p.mass, m);
-  Kokkos::deep_copy(p.inertia, I);
-  Kokkos::deep_copy(p.radius0, r0);
-  Kokkos::deep_copy(p.radius, r0);
-  Kokkos::deep_copy(p.material, mat);
-  Kokkos::deep_copy(p.gid, gid);
-  Kokkos::deep_copy(driven, dr);
-  return p;
-}
-
-// Wall positions are kept on the host in double (exact prescribed displacement, no drift in
-// float) and copied to the device after each move; the velocity of a step is its displacement
-// over dt, so damping and friction see the mean velocity of the step.
-template <class T, class Device>
-class WallDriver {
- public:
-  WallDriver(const Scene& s, Walls<T, Device>& w) : specs_(s.walls), w_(w) {
-    const int nw = static_cast<int>(specs_.size());
-    w_ = Walls<T, Device>(nw);
-    point_ = Kokkos::create_mirror_view(w_.point);
-    vel_ = Kokkos::create_mirror_view(w_.velocity);
-    auto nrm = Kokkos::create_mirror_view(w_.normal);
-    auto mat = Kokkos::create_mirror_view(w_.material);
-    pos_.resize(nw);
-    at_build_.resize(nw);
-    for (int k = 0; k < nw; ++k) {
-      pos_[k] = specs_[k].point;
-      for (int d = 0; d < 3; ++d) {
-        point_(k, d) = T(pos_[k][d]);
-        nrm(k, d) = T(specs_[k].normal[d]);
-        vel_(k, d) = T(0);
-      }
-      mat(k) = specs_[k].material;
-    }
-    Kokkos::deep_copy(w_.point, point_);
-    Kokkos::deep_copy(w_.normal, nrm);
-    Kokkos::deep_copy(w_.velocity, vel_);
-    Kokkos::deep_copy(w_.material, mat);
-  }
-
-  // Moves the walls over [t0, t0 + dt].
-  void advance(double t0, double dt) {
-    bool changed = false;
-    for (std::size_t k = 0; k < specs_.size(); ++k) {
-      const Vec3d d = specs_[k].displacement(t0, t0 + dt);
-      for (int c = 0; c < 3; ++c) {
-        const T vel = T(d[c] / dt);
-        if (d[c] != 0.0 || vel_(k, c) != vel) changed = true;
-        pos_[k][c] += d[c];
-        point_(k, c) = T(pos_[k][c]);
-        vel_(k, c) = vel;
-      }
-    }
-    if (changed) {
-      Kokkos::deep_copy(w_.point, point_);
-      Kokkos::deep_copy(w_.velocity, vel_);
-    }
-  }
-
-  // Displacement of wall k along its normal since t = 0.
-  double normal_displacement(int k) const {
-    double s = 0;
-    for (int d = 0; d < 3; ++d) s += (pos_[k][d] - specs_[k].point[d]) * specs_[k].normal[d];
-    return s;
-  }
-
-  // The rebuild rule's wall measure, on the host: max_w |normal displacement since mark_build()|.
-  void mark_build() { at_build_ = pos_; }
-  double max_shift_since_build() const {
-    double m = 0;
-    for (std::size_t k = 0; k < pos_.size(); ++k) {
-      double s = 0;
-      for (int d = 0; d < 3; ++d) s += (pos_[k][d] - at_build_[k][d]) * specs_[k].normal[d];
-      m = std::max(m, std::fabs(s));
-    }
-    return m;
-  }
-
- private:
-  const std::vector<WallSpec>& specs_;
-  Walls<T, Device>& w_;
-  host_mirror_t<typename Walls<T, Device>::vec_view> point_, vel_;
-  std::vector<Vec3d> pos_, at_build_;
-};
-
-// Driven particles with a motion (piecewise-constant velocity): the velocity of a step is the
-// exact displacement of the step over dt (as for walls), written to the device when it changes.
-template <class T, class Device>
-class DrivenMotion {
- public:
-  explicit DrivenMotion(const Scene& s) : specs_(s.particles) {
-    for (std::size_t i = 0; i < specs_.size(); ++i)
-      if (specs_[i].driven && !specs_[i].motion.empty()) idx_.push_back(static_cast<int>(i));
-    const int n = static_cast<int>(idx_.size());
-    d_idx_ = Kokkos::View<int*, Device>("epac::driver::moved", n);
-    d_vel_ = Kokkos::View<T* [3], Kokkos::LayoutLeft, Device>("epac::driver::moved_velocity", n);
-    h_vel_ = Kokkos::create_mirror_view(d_vel_);
-    auto hi = Kokkos::create_mirror_view(d_idx_);
-    for (int k = 0; k < n; ++k) hi(k) = idx_[k];
-    Kokkos::deep_copy(d_idx_, hi);
-    last_.assign(n, Vec3d{0, 0, 0});
-  }
-  bool empty() const { return idx_.empty(); }
-
-  // After a spatial sort: the moved particles' device indices follow them (inv: old -> new).
-  void reindex(const Kokkos::View<int*, Device>& inv) {
-    if (idx_.empty()) return;
-    const auto idx = d_idx_;
-    Kokkos::parallel_for("epac::driver::driven_reindex",
-                         Kokkos::RangePolicy<typename Device::execution_space>(0, static_cast<int>(idx_.size())),
-                         KOKKOS_LAMBDA(int k) { idx(k) = inv(idx(k)); });
-  }
-
-  // Sets the driven velocities for the step [t0, t0 + dt].
-  void advance(const Particles<T, Device>& p, double t0, double dt) {
-    if (idx_.empty()) return;
-    bool changed = first_;
-    first_ = false;
-    for (std::size_t k = 0; k < idx_.size(); ++k) {
-      const Vec3d d = segments_displacement(specs_[idx_[k]].motion, t0, t0 + dt);
-      for (int c = 0; c < 3; ++c) {
-        const double v = d[c] / dt;
-        if (v != last_[k][c]) changed = true;
-        last_[k][c] = v;
-        h_vel_(k, c) = T(v);
-      }
-    }
-    if (!changed) return;
-    Kokkos::deep_copy(d_vel_, h_vel_);
-    const auto idx = d_idx_;
-    const auto vel = d_vel_;
-    const auto v = p.v;
-    Kokkos::parallel_for("epac::driver::driven_motion",
-                         Kokkos::RangePolicy<typename Device::execution_space>(0, static_cast<int>(idx_.size())),
-                         KOKKOS_LAMBDA(int k) {
-                           for (int c = 0; c < 3; ++c) v(idx(k), c) = vel(k, c);
-                         });
-  }
-
- private:
-  const std::vector<ParticleSpec>& specs_;
-  std::vector<int> idx_;
-  Kokkos::View<int*, Device> d_idx_;
-  Kokkos::View<T* [3], Kokkos::LayoutLeft, Device> d_vel_;
-  typename Kokkos::View<T* [3], Kokkos::LayoutLeft, Device>::HostMirror h_vel_;
-  std::vector<Vec3d> last_;
-  bool first_ = true;
-};
-
+// One run: run() calls the phases in the order of the step. The members are what the phases
+// share; the run is built once and run once.
 template <template <class, unsigned, class> class Factory, class T, unsigned Bits>
-RunSummary run_scene(const Scene& scene, const RunOptions& opt) {
+class SceneRun {
+ public:
   using Device = DefaultDevice;
-  using exec = typename Device::execution_space;
   using F = Factory<T, Bits, Device>;
   using Model = typename F::model_type;
-  using clock = std::chrono::steady_clock;
   static_assert(Model::effects::bits == Bits, "the factory must build the model with the dispatched effects");
 
-  const auto setup_start = clock::now();
-  Model model = F::create(scene);  // host validation: throws before anything is written
+  // The model's host validation throws here, before anything is written.
+  SceneRun(const Scene& scene, const RunOptions& opt)
+      : scene_(scene),
+        opt_(opt),
+        setup_start_(clock::now()),
+        model_(F::create(scene)),
+        g_(T(scene.gravity[0]), T(scene.gravity[1]), T(scene.gravity[2])),
+        dt_(T(scene.run.dt)),
+        half_dt_(T(0.5 * scene.run.dt)),
+        box_(scene.box),
+        det_(T(scene.run.skin), F::pair_history_fields, F::wall_history_fields),
+        phases_(opt.phase_times) {}
+  SceneRun(const SceneRun&) = delete;  // the sort callback and the wall driver point into it
+  SceneRun& operator=(const SceneRun&) = delete;
 
-  RunSummary sum;
-  sum.scene = scene.source;
-  sum.model = scene.model.name;
-  sum.effects = effect_names(Bits);
-  sum.scalar = std::is_same<T, float>::value ? "float" : "double";
-  sum.backend = exec::name();
-  sum.threads = exec().concurrency();
-  sum.particles = static_cast<std::int64_t>(scene.particles.size());
-  sum.walls = static_cast<std::int64_t>(scene.walls.size());
-  sum.steps = opt.steps >= 0 ? opt.steps : scene.run.steps;
-  sum.dt = scene.run.dt;
-  sum.history_fields = F::pair_history_fields;
-  sum.bytes_per_contact = bytes_per_contact(F::pair_history_fields, sizeof(T));
+  RunSummary run() {
+    describe();
+    build_state();
+    build_contacts();
+    open_outputs();
+    first_pass();
+    step_loop();
+    finish();
+    return sum_;
+  }
 
-  prepare_output_dir(opt.out_dir, opt.overwrite);  // refuses another run's outputs (or removes them)
-  sum.timeseries_path = opt.out_dir + "/timeseries.csv";
-  sum.summary_path = opt.out_dir + "/summary.json";
+ private:
+  using exec = typename Device::execution_space;
+  using clock = std::chrono::steady_clock;
 
-  const bool info = !opt.quiet;
-  if (info) {
-    std::printf("epac-run: %s: %lld particles, %lld walls, %zu materials\n", scene.source.c_str(),
-                static_cast<long long>(sum.particles), static_cast<long long>(sum.walls), scene.materials.size());
-    std::printf("model %s, scalar %s, backend %s, %d threads\n", sum.model.c_str(), sum.scalar.c_str(),
-                sum.backend.c_str(), sum.threads);
-    std::printf("effects: %s (%s)\n", sum.effects.c_str(),
-                scene.model.effects_overridden ? "set in [model] effects" : "derived from the materials");
-    for (const auto& note : scene.model.notes) std::printf("note: %s\n", note.c_str());
+  // The summary's description of the run, the output folder, the opening lines.
+  void describe() {
+    sum_.scene = scene_.source;
+    sum_.model = scene_.model.name;
+    sum_.effects = effect_names(Bits);
+    sum_.scalar = std::is_same<T, float>::value ? "float" : "double";
+    sum_.backend = exec::name();
+    sum_.threads = exec().concurrency();
+    sum_.particles = static_cast<std::int64_t>(scene_.particles.size());
+    sum_.walls = static_cast<std::int64_t>(scene_.walls.size());
+    sum_.steps = opt_.steps >= 0 ? opt_.steps : scene_.run.steps;
+    sum_.dt = scene_.run.dt;
+    sum_.history_fields = F::pair_history_fields;
+    sum_.bytes_per_contact = bytes_per_contact(F::pair_history_fields, sizeof(T));
+
+    prepare_output_dir(opt_.out_dir, opt_.overwrite);  // refuses another run's outputs (or removes them)
+    sum_.timeseries_path = opt_.out_dir + "/timeseries.csv";
+    sum_.summary_path = opt_.out_dir + "/summary.json";
+
+    info_ = !opt_.quiet;
+    if (info_) print_description();
+    check_time_step();
+  }
+
+  void print_description() const {
+    std::printf("epac-run: %s: %lld particles, %lld walls, %zu materials\n", scene_.source.c_str(),
+                static_cast<long long>(sum_.particles), static_cast<long long>(sum_.walls), scene_.materials.size());
+    std::printf("model %s, scalar %s, backend %s, %d threads\n", sum_.model.c_str(), sum_.scalar.c_str(),
+                sum_.backend.c_str(), sum_.threads);
+    std::printf("effects: %s (%s)\n", sum_.effects.c_str(),
+                scene_.model.effects_overridden ? "set in [model] effects" : "derived from the materials");
+    for (const auto& note : scene_.model.notes) std::printf("note: %s\n", note.c_str());
     std::printf("storage: pairs %s; walls %s\n", bytes_per_contact_text(F::pair_history_fields, sizeof(T)).c_str(),
                 bytes_per_contact_text(F::wall_history_fields, sizeof(T)).c_str());
     std::printf("dt = %g s (%.3g of the smallest Rayleigh time), %lld steps, skin %g m, output every %lld steps\n",
-                scene.run.dt, scene.run.dt / rayleigh_time(scene), static_cast<long long>(sum.steps),
-                scene.run.skin, static_cast<long long>(scene.run.output_interval));
+                scene_.run.dt, scene_.run.dt / rayleigh_time(scene_), static_cast<long long>(sum_.steps),
+                scene_.run.skin, static_cast<long long>(scene_.run.output_interval));
     std::fflush(stdout);
   }
+
   // dt / T_R matters for Hertz-type laws acting on integrated particles (not for linear_spring,
   // whose stiffness is its own, nor for a scene of driven particles only).
-  const bool all_driven = std::all_of(scene.particles.begin(), scene.particles.end(),
-                                      [](const ParticleSpec& q) { return q.driven; });
-  const double dt_ratio =
-      scene.model.name == "linear_spring" || all_driven ? 0.0 : scene.run.dt / rayleigh_time(scene);
-  if (dt_ratio > 1.0)  // a warning, not only information: printed with --quiet too
-    std::fprintf(stderr, "epac-run: warning: run.dt = %g s is %.3g smallest Rayleigh times (explicit DEM needs about "
-                 "0.1-0.3); the divergence watch stops the run if particles start to fly apart\n",
-                 scene.run.dt, dt_ratio);
-
-  Kokkos::View<unsigned char*, Device> driven;
-  Particles<T, Device> p = make_particles<T, Device>(scene, driven);
-  F::bind(model, p);
-  const bool any_driven = scene.any_driven();
-  Walls<T, Device> walls;
-  WallDriver<T, Device> wall_driver(scene, walls);
-  validate(p, walls, model);  // host: material indices, radii, ids, unit normals (params/state_validation.hpp)
-  DrivenMotion<T, Device> driven_motion(scene);
-  const Vec3<T> g(T(scene.gravity[0]), T(scene.gravity[1]), T(scene.gravity[2]));
-  const T dt = T(scene.run.dt);
-  const T half_dt = T(0.5 * scene.run.dt);
-  const int nw = walls.n;
-  BoxMotion<T, Device> box(scene.box);
-  box.apply(p);  // the host wrapped the positions into the box (finish_scene)
-
-  ContactDetector<T, Device> det(T(scene.run.skin), F::pair_history_fields, F::wall_history_fields);
-  // [run] spatial_sort: every per-particle array follows the cell order at each rebuild.
-  typename ContactDetector<T, Device>::sort_callback on_sort;
-  if (scene.run.spatial_sort)
-    on_sort = [&](const Kokkos::View<int*, Device>& perm) {
-      const Permuter<T, Device> permute(perm);
-      permute.particles(p);
-      permute(driven);
-      F::reorder(model, permute);
-      driven_motion.reindex(permute.inverse());
-    };
-  det.detect(p, walls, &on_sort);
-  det.remap(p);
-  // [run] initial_history: contacts overlapping at step 0 start from a quasi-static load
-  if (start_history(scene, model, p, walls, det, sum, info)) {
-    det.detect(p, walls, &on_sort);  // the load grew radii past the skin rule
-    det.remap(p);
+  void check_time_step() {
+    const bool all_driven = std::all_of(scene_.particles.begin(), scene_.particles.end(),
+                                        [](const ParticleSpec& q) { return q.driven; });
+    dt_ratio_ = scene_.model.name == "linear_spring" || all_driven ? 0.0 : scene_.run.dt / rayleigh_time(scene_);
+    if (dt_ratio_ > 1.0)  // a warning, not only information: printed with --quiet too
+      std::fprintf(stderr, "epac-run: warning: run.dt = %g s is %.3g smallest Rayleigh times (explicit DEM needs "
+                   "about 0.1-0.3); the divergence watch stops the run if particles start to fly apart\n",
+                   scene_.run.dt, dt_ratio_);
   }
-  wall_driver.mark_build();
-  // Deterministic mode ([run] deterministic, --deterministic): per-contact buffers summed per
-  // particle in key order (compute/deterministic_pass.hpp); its incidences follow every rebuild.
-  const bool deterministic = opt.deterministic || scene.run.deterministic;
-  DeterministicPass<T, Device> det_pass;
-  if (deterministic) det_pass.rebuild(p, det.pairs, det.walls);
-  if (info && deterministic) std::printf("deterministic mode: the same bits on any thread count\n");
-  // One accumulator for all passes (its per-thread copies are allocated once); rebound if the
-  // particle views are ever reallocated.
-  ForceSums<T, Device> sums(p);
-  PhaseTimer phases(opt.phase_times);
 
-  ContactOutputs<T, Device> pair_out, wall_out;
-  auto size_outputs = [&]() {
+  // Particles, walls and their motions, and the periodic box on the device.
+  void build_state() {
+    p_ = make_particles<T, Device>(scene_, driven_);
+    F::bind(model_, p_);
+    any_driven_ = scene_.any_driven();
+    wall_driver_.emplace(scene_, walls_);
+    validate(p_, walls_, model_);  // host: material indices, radii, ids, unit normals (params/state_validation.hpp)
+    driven_motion_.emplace(scene_);
+    nw_ = walls_.n;
+    box_.apply(p_);  // the host wrapped the positions into the box (finish_scene)
+  }
+
+  // The first contact lists, the initial history, and the force pass's accumulators.
+  void build_contacts() {
+    if (scene_.run.spatial_sort)
+      on_sort_ = [this](const Kokkos::View<int*, Device>& perm) { sort_particles(perm); };
+    det_.detect(p_, walls_, &on_sort_);
+    det_.remap(p_);
+    // [run] initial_history: contacts overlapping at step 0 start from a quasi-static load
+    if (start_history(scene_, model_, p_, walls_, det_, sum_, info_)) {
+      det_.detect(p_, walls_, &on_sort_);  // the load grew radii past the skin rule
+      det_.remap(p_);
+    }
+    wall_driver_->mark_build();
+    // Deterministic mode ([run] deterministic, --deterministic): per-contact buffers summed per
+    // particle in key order (compute/deterministic_pass.hpp); its incidences follow every rebuild.
+    deterministic_ = opt_.deterministic || scene_.run.deterministic;
+    if (deterministic_) det_pass_.rebuild(p_, det_.pairs, det_.walls);
+    if (info_ && deterministic_) std::printf("deterministic mode: the same bits on any thread count\n");
+    // One accumulator for all passes (its per-thread copies are allocated once); rebound if the
+    // particle views are ever reallocated.
+    sums_ = ForceSums<T, Device>(p_);
+  }
+
+  // [run] spatial_sort: every per-particle array follows the cell order at each rebuild.
+  void sort_particles(const Kokkos::View<int*, Device>& perm) {
+    const Permuter<T, Device> permute(perm);
+    permute.particles(p_);
+    permute(driven_);
+    F::reorder(model_, permute);
+    driven_motion_->reindex(permute.inverse());
+  }
+
+  // Every output file opens under its .partial name; each gets its final name in finish().
+  void open_outputs() {
+    std::vector<std::string> wall_names;
+    for (const auto& w : scene_.walls) wall_names.push_back(w.name);
+    if (scene_.run.contact_output)
+      contacts_csv_ = std::make_unique<ContactsWriter>(opt_.out_dir + "/contacts.csv", F::contact_extra_names(),
+                                                       wall_names);
+    if (scene_.run.particle_output)
+      particles_csv_ = std::make_unique<ParticlesWriter>(opt_.out_dir + "/particles.csv");
+    // [run] snapshot_format = "vtp": particles.pvd + snapshots/*.vtp
+    if (scene_.run.snapshot_format == "vtp") snapshots_ = std::make_unique<SnapshotWriter>(opt_.out_dir);
+    csv_ = std::make_unique<TimeseriesWriter>(sum_.timeseries_path, wall_names, any_driven_, scene_.box.enabled);
+  }
+
+  // The force pass of step 0 with dt = 0 (forces for the opening half kick; no tangential
+  // increment), its sample and divergence check: the end of the setup.
+  void first_pass() {
+    force_pass(T(0), true, 0);
+    sample(0);
+    diverged(0);
+    Kokkos::fence();
+    sum_.setup_time_s = std::chrono::duration<double>(clock::now() - setup_start_).count();
+  }
+
+  // Forces are zeroed by kick_drift (and are zero on allocation before the first pass).
+  // `step`: the step whose forces these are (for contacts.csv).
+  // Phases (--phase-times): force (hooks, both lists, sums.end()), output (contacts.csv),
+  // growth (after_forces).
+  void force_pass(T step_dt, bool with_outputs, std::int64_t step) {
+    F::before_forces(model_, p_, step_dt);
+    if (with_outputs) size_outputs();
+    if (!sums_.bound_to(p_)) sums_ = ForceSums<T, Device>(p_);
+    const ContactOutputs<T, Device> none{};
+    if (deterministic_) det_pass_.begin(model_);
+    else sums_.begin();
+    compute_pair_forces(model_, p_, det_.pairs, det_.pair_history, step_dt, sums_, with_outputs ? pair_out_ : none,
+                        det_pass_.pair_buffer);
+    if (nw_ > 0)
+      compute_wall_forces(model_, p_, walls_, det_.walls, det_.wall_history, step_dt, sums_,
+                          with_outputs ? wall_out_ : none, det_pass_.wall_buffer);
+    if (deterministic_) det_pass_.end(model_, p_);
+    else sums_.end();
+    phases_.lap(Phase::force);
+    if (with_outputs && contacts_csv_) {  // before after_forces: the geometry the force pass saw
+      contacts_csv_->write(step, step * scene_.run.dt,
+                           collect_contacts<F>(model_, p_, walls_, det_.pairs, det_.pair_history, det_.walls,
+                                               det_.wall_history, pair_out_, wall_out_));
+      phases_.lap(Phase::output);
+    }
+    F::after_forces(model_, p_, step_dt);
+    phases_.lap(Phase::growth);
+  }
+
+  // Room for the per-contact outputs of a sampled force pass (25% headroom on growth).
+  void size_outputs() {
     auto fit = [](ContactOutputs<T, Device>& o, int count, const char* label) {
       if (static_cast<int>(o.overlap.extent(0)) >= count) return;
       const int cap = count + count / 4 + 16;
       o.normal_force = Kokkos::View<T*, Device>(std::string(label) + ".normal_force", cap);
       o.overlap = Kokkos::View<T*, Device>(std::string(label) + ".overlap", cap);
     };
-    fit(pair_out, det.pairs.count, "pair_out");
-    fit(wall_out, det.walls.count, "wall_out");
-  };
-  std::vector<std::string> wall_names;
-  for (const auto& w : scene.walls) wall_names.push_back(w.name);
-  std::unique_ptr<ContactsWriter> contacts_csv;
-  std::unique_ptr<ParticlesWriter> particles_csv;
-  if (scene.run.contact_output)
-    contacts_csv = std::make_unique<ContactsWriter>(opt.out_dir + "/contacts.csv", F::contact_extra_names(), wall_names);
-  if (scene.run.particle_output) particles_csv = std::make_unique<ParticlesWriter>(opt.out_dir + "/particles.csv");
-  std::unique_ptr<SnapshotWriter> snapshots;  // [run] snapshot_format = "vtp": particles.pvd + snapshots/*.vtp
-  if (scene.run.snapshot_format == "vtp") snapshots = std::make_unique<SnapshotWriter>(opt.out_dir);
+    fit(pair_out_, det_.pairs.count, "pair_out");
+    fit(wall_out_, det_.walls.count, "wall_out");
+  }
 
-  // Forces are zeroed by kick_drift (and are zero on allocation before the first pass).
-  // `step`: the step whose forces these are (for contacts.csv).
-  // Phases (--phase-times): force (hooks, both lists, sums.end()), output (contacts.csv),
-  // growth (after_forces).
-  auto force_pass = [&](T step_dt, bool with_outputs, std::int64_t step) {
-    F::before_forces(model, p, step_dt);
-    if (with_outputs) size_outputs();
-    if (!sums.bound_to(p)) sums = ForceSums<T, Device>(p);
-    const ContactOutputs<T, Device> none{};
-    if (deterministic) det_pass.begin(model);
-    else sums.begin();
-    compute_pair_forces(model, p, det.pairs, det.pair_history, step_dt, sums, with_outputs ? pair_out : none,
-                        det_pass.pair_buffer);
-    if (nw > 0)
-      compute_wall_forces(model, p, walls, det.walls, det.wall_history, step_dt, sums, with_outputs ? wall_out : none,
-                          det_pass.wall_buffer);
-    if (deterministic) det_pass.end(model, p);
-    else sums.end();
-    phases.lap(Phase::force);
-    if (with_outputs && contacts_csv) {  // before after_forces: the geometry the force pass saw
-      contacts_csv->write(step, step * scene.run.dt,
-                          collect_contacts<F>(model, p, walls, det.pairs, det.pair_history, det.walls,
-                                              det.wall_history, pair_out, wall_out));
-      phases.lap(Phase::output);
-    }
-    F::after_forces(model, p, step_dt);
-    phases.lap(Phase::growth);
-  };
-  auto write_particles = [&](std::int64_t step) {
-    auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.x);
-    auto R = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.radius);
-    auto R0 = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.radius0);
-    const auto vol = F::template particle_volume<T, Device>(model);
+  // One sample: a timeseries.csv row, particles.csv rows, a snapshot.
+  void sample(std::int64_t step) {
+    Sample s;
+    s.step = step;
+    s.time = step * scene_.run.dt;
+    sample_state(p_, driven_, any_driven_, g_, det_.pairs, det_.walls, pair_out_, wall_out_, nw_, s);
+    s.wall_displacement.resize(nw_);
+    for (int k = 0; k < nw_; ++k) s.wall_displacement[k] = wall_driver_->normal_displacement(k);
+    for (int d = 0; d < 3; ++d) s.box_edge[d] = box_.edge()[d];
+    csv_->write(s);
+    if (particles_csv_) write_particles(step);
+    if (snapshots_) snapshots_->write(capture_snapshot<F>(model_, p_, step, s.time));
+    stats_.add_sample(s.pair_contacts + s.wall_contacts, in_window(step));
+  }
+
+  void write_particles(std::int64_t step) {
+    auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p_.x);
+    auto R = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p_.radius);
+    auto R0 = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p_.radius0);
+    const auto vol = F::template particle_volume<T, Device>(model_);
     auto V = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), vol);
-    auto gid = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.gid);
-    const int n = p.n;
+    auto gid = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p_.gid);
+    const int n = p_.n;
     std::vector<double> xs(n), ys(n), zs(n), Rs(n), R0s(n), Vs(n);
     for (int i = 0; i < n; ++i) {  // rows in global-id order (the arrays may be spatially sorted)
       const std::size_t k = static_cast<std::size_t>(gid(i));
@@ -385,166 +274,205 @@ RunSummary run_scene(const Scene& scene, const RunOptions& opt) {
       Rs[k] = R(i); R0s[k] = R0(i);
       Vs[k] = static_cast<int>(V.extent(0)) == n ? double(V(i)) : 4.0 / 3.0 * M_PI * Rs[k] * Rs[k] * Rs[k];
     }
-    particles_csv->write(step, step * scene.run.dt, xs, ys, zs, Rs, R0s, Vs);
-  };
-
-  TimeseriesWriter csv(sum.timeseries_path, [&] {
-    std::vector<std::string> names;
-    for (const auto& w : scene.walls) names.push_back(w.name);
-    return names;
-  }(), any_driven, scene.box.enabled);
-  double active_sum = 0;
-  std::int64_t samples = 0;
-  double window_active_sum = 0, window_list_steps = 0;  // --time-after window
-  std::int64_t window_samples = 0;
-  auto write_sample = [&](std::int64_t step) {
-    Sample s;
-    s.step = step;
-    s.time = step * scene.run.dt;
-    sample_state(p, driven, any_driven, g, det.pairs, det.walls, pair_out, wall_out, nw, s);
-    s.wall_displacement.resize(nw);
-    for (int k = 0; k < nw; ++k) s.wall_displacement[k] = wall_driver.normal_displacement(k);
-    for (int d = 0; d < 3; ++d) s.box_edge[d] = box.edge()[d];
-    csv.write(s);
-    if (particles_csv) write_particles(step);
-    if (snapshots) snapshots->write(capture_snapshot<F>(model, p, step, s.time));
-    active_sum += static_cast<double>(s.pair_contacts + s.wall_contacts);
-    ++samples;
-    if (opt.time_after >= 0 && step > opt.time_after) {
-      window_active_sum += static_cast<double>(s.pair_contacts + s.wall_contacts);
-      ++window_samples;
-    }
-  };
+    particles_csv_->write(step, step * scene_.run.dt, xs, ys, zs, Rs, R0s, Vs);
+  }
 
   // Divergence watch (diagnostics.hpp), at step 0, before every rebuild (a non-finite or runaway
   // particle forces one) and at every output step: sets the status; the loop then stops.
-  auto diverged = [&](std::int64_t step) {
-    const std::string why = divergence_check(p, driven, scene.run.dt, scene);
+  bool diverged(std::int64_t step) {
+    const std::string why = divergence_check(p_, driven_, scene_.run.dt, scene_);
     if (why.empty()) return false;
-    sum.status = "diverged";
+    sum_.status = "diverged";
     char where[160];
     std::snprintf(where, sizeof where, "step %lld: ", static_cast<long long>(step));
-    sum.status_reason = where + why;
-    if (dt_ratio > 0.3) {
-      std::snprintf(where, sizeof where, "; run.dt is %.3g smallest Rayleigh times: reduce it", dt_ratio);
-      sum.status_reason += where;
+    sum_.status_reason = where + why;
+    if (dt_ratio_ > 0.3) {
+      std::snprintf(where, sizeof where, "; run.dt is %.3g smallest Rayleigh times: reduce it", dt_ratio_);
+      sum_.status_reason += where;
     }
     return true;
-  };
+  }
 
-  // First force pass with dt = 0: forces for the opening half kick; no tangential increment.
-  force_pass(T(0), true, 0);
-  write_sample(0);
-  diverged(0);
-  Kokkos::fence();
-  sum.setup_time_s = std::chrono::duration<double>(clock::now() - setup_start).count();
-
-  const std::int64_t steps = sum.steps;
-  const std::int64_t every = scene.run.output_interval;
-  ProgressLine progress(opt.progress && !opt.quiet, steps);
-  double list_steps = 0;
-  const std::int64_t builds0 = det.builds;
-  const auto loop_start = clock::now();
-  phases.start();
-  bool full_step_velocities = true;  // v is at a whole step (after a closing half kick)
-  auto window_start = loop_start;
-  std::int64_t done = 0;  // steps completed (their forces and outputs written)
-  for (std::int64_t step = 1; step <= steps && sum.status == "completed"; ++step) {
-    if (step == opt.time_after + 1) {
-      Kokkos::fence();
-      window_start = clock::now();
+  // The steps, until the last, a divergence or a stop signal.
+  void step_loop() {
+    const std::int64_t steps = sum_.steps;
+    const std::int64_t every = scene_.run.output_interval;
+    ProgressLine progress(opt_.progress && !opt_.quiet, steps);
+    stats_.builds0 = det_.builds;
+    loop_start_ = clock::now();
+    phases_.start();
+    window_start_ = loop_start_;
+    for (std::int64_t step = 1; step <= steps && sum_.status == "completed"; ++step) {
+      if (step == opt_.time_after + 1) {
+        Kokkos::fence();
+        window_start_ = clock::now();
+      }
+      const T shift = advance(step);
+      if (det_.needs_rebuild(shift, T(wall_driver_->max_shift_since_build()))) {
+        if (diverged(step)) break;  // before the cell list meets a non-finite coordinate
+        rebuild_contacts();
+      }
+      // SIGINT/SIGTERM: this step is the last; it writes its sample like the final step.
+      const int signal = stop_signal();
+      const bool output = step % every == 0 || step == steps || signal != 0;
+      force_pass(dt_, output, step);
+      full_step_velocities_ = output;
+      if (output) close_step(step);
+      stats_.done = step;
+      if (output && diverged(step)) break;
+      if (signal != 0) interrupt(signal, step);
+      stats_.add_step(det_.pairs.count + det_.walls.count, in_window(step));
+      progress.update(step, stats_.list_steps);
+      phases_.lap(Phase::output);
     }
-    driven_motion.advance(p, (step - 1) * scene.run.dt, scene.run.dt);
+    Kokkos::fence();
+    loop_end_ = clock::now();
+    progress.finish();
+  }
+
+  // Driven velocities, box deformation, kicks, drift and wall motion of `step`; returns the
+  // particles' shift for the rebuild rule.
+  T advance(std::int64_t step) {
+    driven_motion_->advance(p_, (step - 1) * scene_.run.dt, scene_.run.dt);
     // [box.deform] remap x, before the drift: the rebuild measure below sees it as displacement
-    box.deform_to(p, step);
+    box_.deform_to(p_, step);
     // closing half kick of the previous step (if deferred) + opening half kick + drift
-    const T shift = kick_drift(p, driven, g, full_step_velocities ? half_dt : dt, dt, det.reference_positions(),
-                               det.reference_radii());
-    wall_driver.advance((step - 1) * scene.run.dt, scene.run.dt);
-    phases.lap(Phase::integration);
-    if (det.needs_rebuild(shift, T(wall_driver.max_shift_since_build()))) {
-      if (diverged(step)) break;  // before the cell list meets a non-finite coordinate
-      box.wrap(p);  // then detect() records the wrapped positions as the reference: a wrap is no motion
-      det.detect(p, walls, &on_sort);
-      wall_driver.mark_build();
-      phases.lap(Phase::detection);
-      det.remap(p);
-      if (deterministic) det_pass.rebuild(p, det.pairs, det.walls);
-      phases.lap(Phase::remap);
-    }
-    // SIGINT/SIGTERM: this step is the last; it writes its sample like the final step.
-    const int signal = stop_signal();
-    const bool output = step % every == 0 || step == steps || signal != 0;
-    force_pass(dt, output, step);
-    full_step_velocities = output;
-    if (output) {
-      half_kick(p, driven, g, half_dt);  // closing half kick now: samples need whole-step velocities
-      phases.lap(Phase::integration);
-      write_sample(step);
-    }
-    done = step;
-    if (output && diverged(step)) break;
-    if (signal != 0) {
-      sum.status = "interrupted";
-      sum.stop_signal = signal;
-      sum.status_reason = std::string(signal == SIGINT ? "SIGINT" : signal == SIGTERM ? "SIGTERM" : "signal") +
-                          " after step " + std::to_string(step);
-    }
-    list_steps += det.pairs.count + det.walls.count;
-    if (opt.time_after >= 0 && step > opt.time_after) window_list_steps += det.pairs.count + det.walls.count;
-    progress.update(step, list_steps);
-    phases.lap(Phase::output);
+    const T shift = kick_drift(p_, driven_, g_, full_step_velocities_ ? half_dt_ : dt_, dt_,
+                               det_.reference_positions(), det_.reference_radii());
+    wall_driver_->advance((step - 1) * scene_.run.dt, scene_.run.dt);
+    phases_.lap(Phase::integration);
+    return shift;
   }
-  Kokkos::fence();
-  const auto loop_end = clock::now();
-  sum.wall_time_s = std::chrono::duration<double>(loop_end - loop_start).count();
-  sum.steps_completed = done;
-  if (opt.time_after >= 0 && opt.time_after < done) {
-    sum.timed.enabled = true;
-    sum.timed.first_step = opt.time_after + 1;
-    sum.timed.steps = done - opt.time_after;
-    sum.timed.wall_s = std::chrono::duration<double>(loop_end - window_start).count();
-    sum.timed.list_contacts_mean = window_list_steps / static_cast<double>(sum.timed.steps);
-    sum.timed.active_contacts_mean = window_samples > 0 ? window_active_sum / window_samples : 0.0;
-  }
-  progress.finish();
 
-  sum.rebuilds = det.builds - builds0;
-  sum.simulated_time = done * scene.run.dt;
-  sum.contacts_mean = samples > 0 ? active_sum / samples : 0.0;
-  sum.contact_list_mean = done > 0 ? list_steps / done : static_cast<double>(det.pairs.count + det.walls.count);
-  if (sum.wall_time_s > 0) {
-    sum.contact_steps_per_second = list_steps / sum.wall_time_s;
-    sum.active_contact_steps_per_second = sum.contacts_mean * done / sum.wall_time_s;
-    sum.particle_steps_per_second = static_cast<double>(sum.particles) * static_cast<double>(done) / sum.wall_time_s;
+  // The skin is used up: new lists, their history, the deterministic incidences.
+  void rebuild_contacts() {
+    box_.wrap(p_);  // then detect() records the wrapped positions as the reference: a wrap is no motion
+    det_.detect(p_, walls_, &on_sort_);
+    wall_driver_->mark_build();
+    phases_.lap(Phase::detection);
+    det_.remap(p_);
+    if (deterministic_) det_pass_.rebuild(p_, det_.pairs, det_.walls);
+    phases_.lap(Phase::remap);
   }
-  if (phases.enabled()) sum.phases = phases.results();
-  if (scene.box.enabled) sum.box_edge.assign(box.edge().begin(), box.edge().end());
-  F::report(model, sum);
-  warn_on_guard_hits(sum);
-  // Every file gets its final name, whole rows only; summary.json last: its presence says the
-  // folder holds one run's complete outputs, its status whether the run completed.
-  csv.commit();
-  if (contacts_csv) contacts_csv->commit();
-  if (particles_csv) particles_csv->commit();
-  write_summary_json(sum.summary_path, sum);
-  if (sum.status == "diverged")
-    throw DivergedError("the simulation diverged at " + sum.status_reason + " (outputs up to step " +
-                        std::to_string(done) + " and summary.json with status \"diverged\" in " + opt.out_dir + ")");
-  if (info) {
-    for (const auto& kv : sum.model_counters) std::printf("%s = %.10g\n", kv.first.c_str(), kv.second);
+
+  // An output step: the closing half kick now (samples need whole-step velocities), the sample.
+  void close_step(std::int64_t step) {
+    half_kick(p_, driven_, g_, half_dt_);
+    phases_.lap(Phase::integration);
+    sample(step);
+  }
+
+  void interrupt(int signal, std::int64_t step) {
+    sum_.status = "interrupted";
+    sum_.stop_signal = signal;
+    sum_.status_reason = std::string(signal == SIGINT ? "SIGINT" : signal == SIGTERM ? "SIGTERM" : "signal") +
+                         " after step " + std::to_string(step);
+  }
+
+  // The step is in the --time-after window.
+  bool in_window(std::int64_t step) const { return opt_.time_after >= 0 && step > opt_.time_after; }
+
+  // The summary, the outputs under their final names, the closing lines.
+  void finish() {
+    summarize();
+    F::report(model_, sum_);
+    warn_on_guard_hits(sum_);
+    // Every file gets its final name, whole rows only; summary.json last: its presence says the
+    // folder holds one run's complete outputs, its status whether the run completed.
+    csv_->commit();
+    if (contacts_csv_) contacts_csv_->commit();
+    if (particles_csv_) particles_csv_->commit();
+    write_summary_json(sum_.summary_path, sum_);
+    if (sum_.status == "diverged")
+      throw DivergedError("the simulation diverged at " + sum_.status_reason + " (outputs up to step " +
+                          std::to_string(stats_.done) + " and summary.json with status \"diverged\" in " +
+                          opt_.out_dir + ")");
+    if (info_) print_results();
+  }
+
+  // Timings, means and rates of the loop (and of the --time-after window).
+  void summarize() {
+    const std::int64_t done = stats_.done;
+    sum_.wall_time_s = std::chrono::duration<double>(loop_end_ - loop_start_).count();
+    sum_.steps_completed = done;
+    if (opt_.time_after >= 0 && opt_.time_after < done) {
+      sum_.timed.enabled = true;
+      sum_.timed.first_step = opt_.time_after + 1;
+      sum_.timed.steps = done - opt_.time_after;
+      sum_.timed.wall_s = std::chrono::duration<double>(loop_end_ - window_start_).count();
+      sum_.timed.list_contacts_mean = stats_.window_list_steps / static_cast<double>(sum_.timed.steps);
+      sum_.timed.active_contacts_mean =
+          stats_.window_samples > 0 ? stats_.window_active_sum / stats_.window_samples : 0.0;
+    }
+    sum_.rebuilds = det_.builds - stats_.builds0;
+    sum_.simulated_time = done * scene_.run.dt;
+    sum_.contacts_mean = stats_.samples > 0 ? stats_.active_sum / stats_.samples : 0.0;
+    sum_.contact_list_mean =
+        done > 0 ? stats_.list_steps / done : static_cast<double>(det_.pairs.count + det_.walls.count);
+    if (sum_.wall_time_s > 0) {
+      sum_.contact_steps_per_second = stats_.list_steps / sum_.wall_time_s;
+      sum_.active_contact_steps_per_second = sum_.contacts_mean * done / sum_.wall_time_s;
+      sum_.particle_steps_per_second =
+          static_cast<double>(sum_.particles) * static_cast<double>(done) / sum_.wall_time_s;
+    }
+    if (phases_.enabled()) sum_.phases = phases_.results();
+    if (scene_.box.enabled) sum_.box_edge.assign(box_.edge().begin(), box_.edge().end());
+  }
+
+  void print_results() const {
+    for (const auto& kv : sum_.model_counters) std::printf("%s = %.10g\n", kv.first.c_str(), kv.second);
     std::printf("%lld steps in %.3f s (setup %.3f s): %.3g contact-steps/s (list entries), %.1f contacts (mean, "
                 "active), %lld rebuilds\n",
-                static_cast<long long>(done), sum.wall_time_s, sum.setup_time_s, sum.contact_steps_per_second,
-                sum.contacts_mean, static_cast<long long>(sum.rebuilds));
-    if (phases.enabled()) {
+                static_cast<long long>(stats_.done), sum_.wall_time_s, sum_.setup_time_s,
+                sum_.contact_steps_per_second, sum_.contacts_mean, static_cast<long long>(sum_.rebuilds));
+    if (phases_.enabled()) {
       std::printf("phases [s]:");
-      for (const auto& kv : sum.phases) std::printf(" %s %.3f", kv.first.c_str(), kv.second);
+      for (const auto& kv : sum_.phases) std::printf(" %s %.3f", kv.first.c_str(), kv.second);
       std::printf("\n");
     }
-    std::printf("wrote %s and %s\n", sum.timeseries_path.c_str(), sum.summary_path.c_str());
+    std::printf("wrote %s and %s\n", sum_.timeseries_path.c_str(), sum_.summary_path.c_str());
   }
-  return sum;
+
+  const Scene& scene_;
+  const RunOptions& opt_;
+  const clock::time_point setup_start_;
+  Model model_;
+  RunSummary sum_;
+  bool info_ = false;     // informational lines (not --quiet)
+  double dt_ratio_ = 0;   // run.dt / smallest Rayleigh time; 0 where it does not apply
+  // device state (build_state)
+  Kokkos::View<unsigned char*, Device> driven_;
+  Particles<T, Device> p_;
+  bool any_driven_ = false;
+  Walls<T, Device> walls_;
+  std::optional<WallDriver<T, Device>> wall_driver_;
+  std::optional<DrivenMotion<T, Device>> driven_motion_;
+  const Vec3<T> g_;
+  const T dt_, half_dt_;
+  int nw_ = 0;
+  BoxMotion<T, Device> box_;
+  // contacts and forces (build_contacts)
+  ContactDetector<T, Device> det_;
+  typename ContactDetector<T, Device>::sort_callback on_sort_;
+  bool deterministic_ = false;
+  DeterministicPass<T, Device> det_pass_;
+  ForceSums<T, Device> sums_;
+  PhaseTimer phases_;
+  // outputs (open_outputs)
+  ContactOutputs<T, Device> pair_out_, wall_out_;
+  std::unique_ptr<ContactsWriter> contacts_csv_;
+  std::unique_ptr<ParticlesWriter> particles_csv_;
+  std::unique_ptr<SnapshotWriter> snapshots_;
+  std::unique_ptr<TimeseriesWriter> csv_;
+  // the loop
+  RunStats stats_;
+  bool full_step_velocities_ = true;  // v is at a whole step (after a closing half kick)
+  clock::time_point loop_start_{}, window_start_{}, loop_end_{};
+};
+
+template <template <class, unsigned, class> class Factory, class T, unsigned Bits>
+RunSummary run_scene(const Scene& scene, const RunOptions& opt) {
+  return SceneRun<Factory, T, Bits>(scene, opt).run();
 }
 
 }  // namespace driver
