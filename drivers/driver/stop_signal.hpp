@@ -1,8 +1,10 @@
 #pragma once
 // SIGINT / SIGTERM: the run stops at the end of the current step and writes whole outputs with
 // summary.json status "interrupted" (run_scene.hpp). The handler only records the signal (an
-// async-signal-safe store to a sig_atomic_t); SA_RESETHAND makes a second signal act as usual,
-// so a second Ctrl-C ends a run that does not reach the end of its step.
+// async-signal-safe store to a sig_atomic_t). A second request ends the process at once (the
+// signal's default action), so a second Ctrl-C ends a run that does not reach the end of its step;
+// the same signal again within 0.5 s is the same request delivered twice (coreutils `timeout` and
+// batch schedulers signal the process and then its process group) and is ignored.
 namespace epac {
 namespace driver {
 

@@ -1,7 +1,8 @@
 // What a run leaves behind is honest: a folder holds one run's outputs (another run's are refused
 // unless --overwrite, which removes them and nothing else), files are whole under their final
 // names, summary.json says whether the run completed, diverged or was interrupted (SIGINT and
-// SIGTERM sent to a running epac-run), the divergence watch stops a run whose time step is far
+// SIGTERM sent to a running epac-run, once or to its process group too, or by coreutils
+// `timeout`), the divergence watch stops a run whose time step is far
 // too large, and no --threads value crashes.
 #include <catch2/catch.hpp>
 
@@ -134,12 +135,15 @@ struct Child {
   pid_t pid = -1;
   fs::path out, err;
 };
-Child spawn_epac_run(const std::vector<std::string>& args, const fs::path& dir) {
+// `program` with `args`; with `own_group` the child leads a new process group (pgid = pid), as a
+// batch scheduler's job or a shell's pipeline does.
+Child spawn_program(const std::string& program, const std::vector<std::string>& args, const fs::path& dir,
+                    bool own_group = false) {
   fs::create_directories(dir);
   Child c;
   c.out = dir / "stdout.txt";
   c.err = dir / "stderr.txt";
-  std::vector<std::string> all = {EPAC_RUN_EXE};
+  std::vector<std::string> all = {program};
   all.insert(all.end(), args.begin(), args.end());
   std::vector<char*> argv;
   for (auto& a : all) argv.push_back(a.data());
@@ -148,10 +152,20 @@ Child spawn_epac_run(const std::vector<std::string>& args, const fs::path& dir) 
   posix_spawn_file_actions_init(&fa);
   posix_spawn_file_actions_addopen(&fa, 1, c.out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
   posix_spawn_file_actions_addopen(&fa, 2, c.err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  const int rc = posix_spawn(&c.pid, EPAC_RUN_EXE, &fa, nullptr, argv.data(), environ);
+  posix_spawnattr_t attr;
+  posix_spawnattr_init(&attr);
+  if (own_group) {
+    posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETPGROUP);
+    posix_spawnattr_setpgroup(&attr, 0);
+  }
+  const int rc = posix_spawnp(&c.pid, program.c_str(), &fa, &attr, argv.data(), environ);
+  posix_spawnattr_destroy(&attr);
   posix_spawn_file_actions_destroy(&fa);
   REQUIRE(rc == 0);
   return c;
+}
+Child spawn_epac_run(const std::vector<std::string>& args, const fs::path& dir, bool own_group = false) {
+  return spawn_program(EPAC_RUN_EXE, args, dir, own_group);
 }
 // Exit status, or 1000 + signal when the child died of a signal; -1 on timeout (then killed).
 int wait_for(const Child& c, double timeout_s = 120) {
@@ -329,6 +343,74 @@ TEST_CASE("SIGINT and SIGTERM stop epac-run after a whole step with status inter
       const auto steps = whole_rows(out / "timeseries.csv");
       CHECK(steps.back() == done);  // the stop step writes its row
       CHECK(partial_files(out).empty());
+    }
+  }
+}
+
+// The outputs of a run that a stop request ended: whole files, status interrupted by `sig`.
+void check_interrupted_outputs(const fs::path& out, int sig) {
+  const auto j = summary_of(out);
+  CHECK(j["status"] == "interrupted");
+  CHECK(std::string(j["status_reason"]).find(sig == SIGINT ? "SIGINT" : "SIGTERM") != std::string::npos);
+  const long done = j["steps_completed"];
+  CHECK(done > 0);
+  const auto steps = whole_rows(out / "timeseries.csv");
+  CHECK(steps.back() == done);
+  CHECK(partial_files(out).empty());
+}
+
+// Waits until a run streams timeseries rows (it is stepping); false after 60 s.
+bool wait_until_stepping(const fs::path& out) {
+  const fs::path partial = out / "timeseries.csv.partial";
+  const auto t0 = std::chrono::steady_clock::now();
+  while (std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() < 60) {
+    if (fs::exists(partial) && fs::file_size(partial) > 4000) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  return false;
+}
+
+TEST_CASE("one stop request delivered twice (process, then its process group) ends the run cleanly",
+          "[driver][signals][integrity]") {
+  // What coreutils `timeout` and batch schedulers do: the signal reaches the process and then, a
+  // few microseconds later, its whole process group. It is one request, not "end now".
+  for (const int sig : {SIGINT, SIGTERM}) {
+    SECTION(sig == SIGINT ? "SIGINT twice" : "SIGTERM twice") {
+      const fs::path dir = fresh_out_dir(sig == SIGINT ? "sigint_group" : "sigterm_group");
+      const fs::path scene = write_scene(dir, kLongScene);
+      const fs::path out = dir / "out";
+      Child c = spawn_epac_run({scene.string(), "--out", out.string(), "--threads", "1", "--quiet"}, dir, true);
+      if (!wait_until_stepping(out)) {
+        kill(c.pid, SIGKILL);
+        wait_for(c);
+        FAIL("epac-run did not start stepping; stderr: " << slurp(c.err));
+      }
+      REQUIRE(kill(c.pid, sig) == 0);
+      REQUIRE(kill(-c.pid, sig) == 0);  // the process group the child leads
+      const int rc = wait_for(c);
+      INFO("stderr: " << slurp(c.err));
+      CHECK(rc == 128 + sig);
+      check_interrupted_outputs(out, sig);
+    }
+  }
+}
+
+TEST_CASE("a run under coreutils timeout ends with whole outputs", "[driver][signals][integrity]") {
+  for (const int sig : {SIGINT, SIGTERM}) {
+    SECTION(sig == SIGINT ? "timeout -s INT" : "timeout -s TERM") {
+      const fs::path dir = fresh_out_dir(sig == SIGINT ? "timeout_int" : "timeout_term");
+      const fs::path scene = write_scene(dir, kLongScene);
+      const fs::path out = dir / "out";
+      // 10 s: long enough for the run to be stepping on a loaded 2-core machine, far shorter
+      // than kLongScene. timeout itself leads a process group, as it does from a shell.
+      Child c = spawn_program("timeout", {"-s", sig == SIGINT ? "INT" : "TERM", "10", EPAC_RUN_EXE, scene.string(),
+                                          "--out", out.string(), "--threads", "1", "--quiet"},
+                              dir, true);
+      const int rc = wait_for(c);
+      INFO("stderr: " << slurp(c.err));
+      CHECK(rc == 124);  // timeout's status when it had to stop the command
+      CHECK(slurp(c.err).find("interrupted") != std::string::npos);
+      check_interrupted_outputs(out, sig);
     }
   }
 }
