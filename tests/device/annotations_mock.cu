@@ -13,7 +13,7 @@
 #define KOKKOS_FUNCTION __host__ __device__
 #include <epac/core/root_solve.hpp>
 #include <epac/core/vec3.hpp>
-#include <epac/models/mdr/mdr_adhesion.hpp>
+#include <epac/models/mdr/detail/mdr_adhesion.hpp>
 #include <epac/models/mdr/mdr_parameters.hpp>
 #include <epac/state/contact_history.hpp>
 #include <epac/state/contact_list.hpp>

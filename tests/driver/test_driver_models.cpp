@@ -8,7 +8,7 @@
 #include "driver_test_util.hpp"
 
 #include <epac/params/nan2022/nan2022_parameters.hpp>
-#include <epac/models/nan2022/nan2022_unloading.hpp>
+#include <epac/models/nan2022/detail/nan2022_unloading.hpp>
 
 #include <algorithm>
 #include <cmath>

@@ -15,7 +15,7 @@ either code (LAMMPS's mdr: beta = -ln(CoR)/sqrt(ln^2 CoR + pi^2) = 0; epac: rest
 no damping), no friction in either: the difference is the normal law and the growth.
 
 --equal-radii adds the same comparison with all radii equal (polyd 0): there epac's balanced flat
-(mdr_pair_balance.hpp) and the authors' radical plane coincide. --ranks N also runs epac+growth on N
+(models/mdr/detail/mdr_pair_balance.hpp) and the authors' radical plane coincide. --ranks N also runs epac+growth on N
 MPI ranks and compares the printed values with 1 rank digit by digit.
 
   python3 tests/lammps/compare_mdr_compaction.py --plugin /tmp/plugin-build-a/drivers/lammps/epacplugin.so

@@ -2,11 +2,15 @@
 // The contact kernel (docs/design.md section 4, step 3): one thread per contact computes geometry,
 // the model's normal law, damping and the tangential spring, then adds force and torque into
 // both particles through ForceSums (compute/particle_sums.hpp: per-thread copies on CPUs,
-// atomics on GPUs). Model is any law with the interface of models/hertz_mindlin.hpp;
-// its Effects set decides at compile time what is computed and which history exists.
+// atomics on GPUs). Model is any law with the interface of models/model_interface.hpp (checked at
+// compile time; models/hertz_mindlin.hpp is the smallest such law); its Effects set decides at
+// compile time what is computed and which history exists, and contact_conventions<Model>
+// (models/contact_conventions.hpp) the law-specific conventions around the normal force.
 #include <epac/compute/particle_sums.hpp>
 #include <epac/core/vec3.hpp>
+#include <epac/models/contact_conventions.hpp>
 #include <epac/models/contact_geometry.hpp>
+#include <epac/models/model_interface.hpp>
 #include <epac/models/tangential_spring.hpp>
 #include <epac/state/contact_history.hpp>
 #include <epac/state/contact_list.hpp>
@@ -38,16 +42,6 @@ struct ContactForceBuffer {
       : force("buffer.force", contacts), torque_i("buffer.torque_i", contacts), torque_j("buffer.torque_j", contacts) {}
   KOKKOS_INLINE_FUNCTION bool enabled() const { return force.extent(0) > 0; }
 };
-
-
-namespace detail {
-// Models whose sides are ordered by global id (MDR) declare `uses_side_order = true`; the
-// others load the 64-bit ids only for friction (orientation of the tangential history).
-template <class M, class = void>
-struct uses_side_order : std::false_type {};
-template <class M>
-struct uses_side_order<M, std::void_t<decltype(M::uses_side_order)>> : std::integral_constant<bool, M::uses_side_order> {};
-}  // namespace detail
 
 // Index into a model's pair table; one material needs no material loads.
 template <class T, class Device>
@@ -101,8 +95,9 @@ namespace detail {
 // fa, ta: ScatterView access objects of the force and torque sums.
 // reversed: g.i is the list's second particle (the pair is evaluated in canonical orientation);
 // the buffer keeps its entries in list order (force on c.first(k)).
-template <bool IsPair, class Model, class T, class Device, class FAccess, class TAccess>
-KOKKOS_FORCEINLINE_FUNCTION void finish_contact(const Model& model, const Particles<T, Device>& p,
+// conv: contact_conventions<Model>::of(model) (compile-time false flags for generic laws).
+template <bool IsPair, class Model, class T, class Device, class Conv, class FAccess, class TAccess>
+KOKKOS_FORCEINLINE_FUNCTION void finish_contact(const Model& model, const Conv& conv, const Particles<T, Device>& p,
                                                 ContactGeometry<T>& g, const Vec3<T>& v_rel, T arm_i, T arm_j,
                                                 const HistoryRow<T, Device>& row,
                                                 const ContactOutputs<T, Device>& out,
@@ -130,13 +125,13 @@ KOKKOS_FORCEINLINE_FUNCTION void finish_contact(const Model& model, const Partic
   if (Eff::damping) {
     const T fd = nf.damping * math::sqrt_nonneg(g.m_eff * nf.k_n) * g.delta_dot;
     if (!nf.damp_compressive_only) fn += fd;
-    else if (fn > T(0)) fn = nf.damp_may_pull ? fn + fd : math::max(fn + fd, T(0));  // by default damping never turns a push into a pull
+    else if (fn > T(0)) fn = conv.damp_may_pull ? fn + fd : math::max(fn + fd, T(0));  // by default damping never turns a push into a pull
   }
   Vec3<T> F = fn * g.n;
   Vec3<T> nxft;  // n x F_t: the torques are -arm_i (n x F_t) on i and -arm_j (n x F_t) on j
   if (Eff::friction) {
     Vec3<T> v_t = v_c - vn * g.n;
-    if (nf.full_radius_arms) {
+    if (conv.full_radius_arms) {
       // the authors' convention (LAMMPS granular_model.cpp): rolling velocity with the full radii
       Vec3<T> w_full = g.R_i * load3(p.omega, g.i);
       if (IsPair) w_full += g.R_j * load3(p.omega, g.j);
@@ -147,7 +142,7 @@ KOKKOS_FORCEINLINE_FUNCTION void finish_contact(const Model& model, const Partic
     // history in the frame of the smaller global id (walls: the particle's)
     const T orient = (!IsPair || g.i_is_first) ? T(1) : T(-1);
     NormalForce<T> nft = nf;
-    if (nf.coulomb_on_damped) nft.f = fn;  // the Coulomb bound on the damped normal force
+    if (conv.coulomb_on_damped) nft.f = fn;  // the Coulomb bound on the damped normal force
     const Vec3<T> ft = tangential_spring_force(nft, g.n, v_t, damp_t, g.dt, trow, orient);
     F += ft;
     nxft = cross(g.n, ft);
@@ -184,6 +179,7 @@ void pair_kernel(const Model& model, const Particles<T, Device>& p, const Contac
                  const ContactOutputs<T, Device>& out, const ContactForceBuffer<T, Device>& buf) {
   using exec = typename Device::execution_space;
   const int nmat = model.nmat;
+  const auto conv = contact_conventions<Model>::of(model);
   const auto fsum = sums.force.scatter;
   const auto tsum = sums.torque.scatter;
   const auto first = c.first;
@@ -202,7 +198,7 @@ void pair_kernel(const Model& model, const Particles<T, Device>& p, const Contac
         const Vec3<T> v_rel = load3(p.v, i) - load3(p.v, j);
         auto fa = fsum.access();
         auto ta = tsum.access();
-        detail::finish_contact<true>(model, p, g, v_rel, g.R_i - half, g.R_j - half,
+        detail::finish_contact<true>(model, conv, p, g, v_rel, g.R_i - half, g.R_j - half,
                                      HistoryRow<T, Device>{hdata, k, 0}, out, buf, k, fa, ta, reversed);
       });
 }
@@ -213,6 +209,7 @@ void compute_pair_forces(const Model& model, const Particles<T, Device>& p, cons
                          const ContactHistory<T, Device>& h, T dt, const ForceSums<T, Device, Policy>& sums,
                          const ContactOutputs<T, Device>& out = {},
                          const ContactForceBuffer<T, Device>& buf = {}) {
+  static_assert(check_contact_model<Model, T, Device>(), "epac: Model is not a contact model (see above)");
   // Canonical orientation: each pair is evaluated as (smaller global id, larger), so the
   // arithmetic does not depend on how the list names it (with FMA contraction even a sum such as
   // arm_i w_i + arm_j w_j rounds differently when swapped). Always for side-ordered laws and
@@ -232,8 +229,10 @@ void compute_wall_forces(const Model& model, const Particles<T, Device>& p, cons
                          const ForceSums<T, Device, Policy>& sums,
                          const ContactOutputs<T, Device>& out = {},
                          const ContactForceBuffer<T, Device>& buf = {}) {
+  static_assert(check_contact_model<Model, T, Device>(), "epac: Model is not a contact model (see above)");
   using exec = typename Device::execution_space;
   const int nmat = model.nmat;
+  const auto conv = contact_conventions<Model>::of(model);
   const auto fsum = sums.force.scatter;
   const auto tsum = sums.torque.scatter;
   const auto first = c.first;
@@ -249,7 +248,7 @@ void compute_wall_forces(const Model& model, const Particles<T, Device>& p, cons
         const Vec3<T> v_rel = load3(p.v, i) - load3(w.velocity, wl);
         auto fa = fsum.access();
         auto ta = tsum.access();
-        detail::finish_contact<false>(model, p, g, v_rel, g.R_i - g.delta, T(0),
+        detail::finish_contact<false>(model, conv, p, g, v_rel, g.R_i - g.delta, T(0),
                                       HistoryRow<T, Device>{hdata, k, 0}, out, buf, k, fa, ta);
       });
 }

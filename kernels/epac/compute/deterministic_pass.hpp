@@ -1,7 +1,8 @@
 #pragma once
 // The deterministic mode of a whole force pass (docs/design.md section 6), for a host that evaluates a
 // pair list and a wall list per step: per-contact force buffers, the lists' incidences, and the
-// model's own per-particle sums (MDR radius growth) stored per contact side. Use:
+// model's own per-particle sums (MDR radius growth) stored per contact side, through the model's
+// optional deterministic hooks (detail::has_deterministic_hooks, models/model_interface.hpp). Use:
 //   DeterministicPass<T, Device> det;
 //   det.rebuild(p, pairs, walls);                   // after every list rebuild or spatial sort
 //   det.begin(model);                               // each pass
@@ -15,21 +16,9 @@
 #include <epac/compute/contact_side_sums.hpp>
 #include <epac/compute/deterministic_reduce.hpp>
 #include <epac/compute/history_remap.hpp>
-
-#include <type_traits>
-#include <utility>
+#include <epac/models/model_interface.hpp>
 
 namespace epac {
-
-namespace detail {
-// Models with per-particle sums of their own declare begin_deterministic_pass(pairs, walls) and
-// end_deterministic_pass(p, pairs, pair_incidence, wall_incidence) (models/mdr/mdr_model.hpp).
-template <class M, class = void>
-struct has_deterministic_hooks : std::false_type {};
-template <class M>
-struct has_deterministic_hooks<M, std::void_t<decltype(std::declval<M&>().begin_deterministic_pass(0, 0))>>
-    : std::true_type {};
-}  // namespace detail
 
 template <class T, class Device>
 struct DeterministicPass {

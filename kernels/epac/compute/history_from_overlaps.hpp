@@ -48,6 +48,7 @@
 // the growth, and K = 100 lies within that (tests/mdr/test_mdr_initial_history.cpp). Without
 // growth the state does not depend on K (MDR: delta_o,max, c_A at delta_Y; Nan: alpha_max).
 #include <epac/compute/contact_forces.hpp>
+#include <epac/models/model_interface.hpp>
 #include <epac/params/validation.hpp>
 #include <epac/state/contact_history.hpp>
 #include <epac/state/contact_list.hpp>
@@ -81,24 +82,8 @@ struct HistoryFromOverlapsReport {
 
 namespace detail {
 
-// The model's particle update after each pass (MDR: radius growth), if it has one.
-template <class M, class = void>
-struct has_update_radii : std::false_type {};
-template <class M>
-struct has_update_radii<M, std::void_t<decltype(std::declval<const M&>().update_radii())>> : std::true_type {};
-
-template <class M, class = void>
-struct has_guard_hits : std::false_type {};
-template <class M>
-struct has_guard_hits<M, std::void_t<decltype(std::declval<const M&>().guard_hits())>> : std::true_type {};
-
-// Models with MDR's growth state (Mdr::growth: radius0, radius, volume and the sums).
-template <class M, class = void>
-struct has_growth_state : std::false_type {};
-template <class M>
-struct has_growth_state<M, std::void_t<decltype(std::declval<const M&>().growth.volume),
-                                       decltype(std::declval<const M&>().growth.bound())>> : std::true_type {};
-
+// (the model's optional members: has_update_radii, has_guard_hits, has_growth_state in
+// models/model_interface.hpp)
 template <class M>
 long long total_guard_hits(const M& m) {
   long long s = 0;
@@ -214,6 +199,7 @@ HistoryFromOverlapsReport history_from_overlaps(const Model& model, const Partic
                                                 const ContactList<Device>& wall_contacts,
                                                 const ContactHistory<T, Device>& wall_history,
                                                 int increments = kHistoryFromOverlapsIncrements) {
+  static_assert(check_contact_model<Model, T, Device>(), "epac: Model is not a contact model (see above)");
   using exec = typename Device::execution_space;
   require_range("history_from_overlaps: increments", increments, 1, Bound::closed, 1000000, Bound::closed);
   const int fields = Model::history_size;

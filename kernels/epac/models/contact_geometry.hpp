@@ -1,7 +1,7 @@
 #pragma once
 // What a normal force law sees of one contact, and what it returns. The contact kernel
 // (compute/contact_forces.hpp) fills ContactGeometry and applies damping, friction and
-// accumulation around the law.
+// accumulation around the law (law-specific conventions of that: models/contact_conventions.hpp).
 #include <epac/core/vec3.hpp>
 
 #include <cstdint>
@@ -31,12 +31,8 @@ struct NormalForce {
   T f = 0;          // normal force of the law on particle i along n; positive = repulsive
   T k_n = 0;        // normal stiffness used for damping and for k_t (the law's current branch)
   T damping = 0;    // viscous coefficient: F_d = damping * sqrt(m_eff * k_n) * delta_dot
-  bool damp_compressive_only = false;  // damp only while f > 0, and never let f + F_d pull
-  // The authors' MDR conventions (MdrFriction::authors, MdrDamping::authors; LAMMPS granular mdr):
-  bool damp_may_pull = false;      // with damp_compressive_only: f + F_d is not clamped at 0
-  bool coulomb_on_damped = false;  // Coulomb bound mu |f + F_d| instead of mu |f|
-  bool full_radius_arms = false;   // the rolling part of the contact-point velocity uses R_i w_i
-                                   // + R_j w_j, and a wall's torque arm is R_i (not R_i - delta)
+  bool damp_compressive_only = false;  // damp only while f > 0, and never let f + F_d pull (unless
+                                       // the law's contact_conventions say damp_may_pull)
   T k_t = 0;        // tangential stiffness
   T damping_t = 0;  // tangential viscous coefficient: F_td = -damping_t sqrt(m_eff k_t) v_t
   T mu = 0;         // Coulomb friction coefficient

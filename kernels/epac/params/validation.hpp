@@ -45,7 +45,8 @@ inline void require_positive(const std::string& name, double value, bool allow_i
 // Requires a constant derived on the host (in double) to be usable in the kernels' scalar type T:
 // finite, and 0 or of magnitude within T's normal range [numeric_limits<T>::min(), max()]. In float a
 // modulus, energy or yield stress whose derived constant overflows becomes inf, and one that
-// underflows becomes 0 or a denormal that a later division turns into inf (issue 10 item 0).
+// underflows becomes 0 or a denormal that a later division turns into inf; create rejects such
+// inputs instead of running to Inf/NaN (docs/stability.md).
 // `from` names the inputs the constant is derived from.
 template <class T>
 void require_representable(const std::string& name, double value, const std::string& from) {  // host

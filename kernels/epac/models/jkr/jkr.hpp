@@ -12,7 +12,7 @@
 // Without adhesion (compiled out or Gamma = 0 for the pair) the law is Hertz.
 #include <epac/models/contact_geometry.hpp>
 #include <epac/models/effects.hpp>
-#include <epac/models/jkr/jkr_contact_radius.hpp>
+#include <epac/models/jkr/detail/jkr_contact_radius.hpp>
 #include <epac/params/material.hpp>
 #include <epac/params/restitution_damping.hpp>
 #include <epac/state/contact_history.hpp>

@@ -1,14 +1,14 @@
 #pragma once
-// The MDR contact model (Zunker & Kamrin, Part I) with the interface of models/hertz_mindlin.hpp:
+// The MDR contact model (Zunker & Kamrin, Part I) with the interface of models/model_interface.hpp:
 // `normal(g, row)` for the generic contact kernel (compute/contact_forces.hpp), a per-pair table
 // indexed by g.pair, history fields only for enabled effects.
 //
 // - Wall contact (g.j == -1): one side, particle i against the wall as a rigid flat.
 // - Pair: two sides split by the rigid flat at the contact plane, placed where the sides' scaled
-//   forces balance (mdr_pair_balance.hpp; the geometric split of mdr_pair_split.hpp is the first
-//   guess); side 0 is the particle with the smaller global id; the pair force is the mean of the
+//   forces balance (detail/mdr_pair_balance.hpp; the geometric split of detail/mdr_pair_split.hpp
+//   is the first guess); side 0 is the particle with the smaller global id; the pair force is the mean of the
 //   sides' forces.
-// - Each side is mdr_side_force (elastic, fully plastic, adhesive) with E_eff = E/(1-nu^2) of its
+// - Each side is mdr_side_force (detail/mdr_side_force.hpp: elastic, fully plastic, adhesive) with E_eff = E/(1-nu^2) of its
 //   own particle.
 // - Adhesion of a pair: the flat at the contact plane is fictitious, so the surface energy Delta
 //   gamma of the real interface is shared by the two sides in proportion to their share of the
@@ -28,10 +28,11 @@
 // - Friction: the foundation's tangential spring with k_t = (4 G*/E*) k_n = 8 G* a-bar (Mindlin,
 //   Nan (22)); its Coulomb limit mu |f| uses the MDR force including adhesive tension.
 // - MdrDamping::authors and MdrFriction::authors replace both by the authors' code's conventions
-//   (mdr_parameters.hpp) for comparisons with LAMMPS's `granular mdr`.
+//   (mdr_parameters.hpp) for comparisons with LAMMPS's `granular mdr`; those the kernel applies
+//   around the normal force come from contact_conventions<Mdr> (end of this file).
 // - A contact is inactive (its history reset, tangential history too) once the apparent overlap is
 //   <= 0 and no side holds an adhesive radius, or once the surfaces are apart by more than the
-//   contact's critical overlap (mdr_detachment.hpp), whatever the sides' histories; the reset
+//   contact's critical overlap (detail/mdr_detachment.hpp), whatever the sides' histories; the reset
 //   happens in the step that releases it, so a re-approach starts as a new contact. The grown
 //   radius stays.
 // - Radius growth: each side's terms go to the particle sums (mdr_radius_growth.hpp; per-thread
@@ -40,14 +41,17 @@
 //   next pass, so no begin call is needed. Deterministic mode (compute/deterministic_pass.hpp):
 //   the terms are stored per contact side (growth_terms) and added per particle in key order.
 #include <epac/compute/contact_side_sums.hpp>
+#include <epac/models/contact_conventions.hpp>
 #include <epac/models/contact_geometry.hpp>
 #include <epac/models/effects.hpp>
-#include <epac/models/mdr/mdr_detachment.hpp>
-#include <epac/models/mdr/mdr_pair_balance.hpp>
-#include <epac/models/mdr/mdr_pair_split.hpp>
+#include <epac/models/mdr/detail/mdr_detachment.hpp>
+#include <epac/models/mdr/detail/mdr_evaluation.hpp>
+#include <epac/models/mdr/detail/mdr_pair_balance.hpp>
+#include <epac/models/mdr/detail/mdr_pair_split.hpp>
+#include <epac/models/mdr/detail/mdr_side_force.hpp>
+#include <epac/models/mdr/mdr_history_layout.hpp>
 #include <epac/models/mdr/mdr_parameters.hpp>
 #include <epac/models/mdr/mdr_radius_growth.hpp>
-#include <epac/models/mdr/mdr_side_force.hpp>
 #include <epac/state/contact_history.hpp>
 #include <epac/state/particles.hpp>
 
@@ -56,7 +60,7 @@
 
 namespace epac {
 
-// Per-contact outputs (issue item 6). Pair values are means over the two sides.
+// Per-contact outputs (Mdr::outputs). Pair values are means over the two sides.
 template <class T>
 struct MdrContactOutput {
   T force = 0;            // MDR force on i along n (no damping), positive = compressive
@@ -79,14 +83,14 @@ struct Mdr {
   static constexpr const char* name = "mdr";
   static constexpr bool uses_side_order = true;  // sides ordered by global id (g.i_is_first)
 
-  // --- history layout: [pair fields][side 0][side 1] ---
-  static constexpr int kPlasticFields = Eff::plasticity ? 4 : 0;  // delta_o,max, yielded, c_A, delta_p
-  static constexpr int kAdhesionFields = Eff::adhesion ? 1 : 0;   // a
-  static constexpr int kGrowthFields = Eff::radius_growth ? 2 : 0;  // delta_o,prev, eps_c,prev
-  static constexpr int side_fields = kPlasticFields + kAdhesionFields + kGrowthFields;
-  // largest total delta_o (19); once a side yielded, the last pass's d_0, delta and
-  // w = d d_0/d delta (the balance's first guess d_0 + w (delta_now - delta), mdr_pair_balance.hpp)
-  static constexpr int pair_fields = Eff::plasticity ? 4 : 0;
+  // --- history layout: [pair fields][side 0][side 1] (mdr_history_layout.hpp) ---
+  using PairField = MdrPairFields<Eff>;
+  using SideField = MdrSideFields<Eff>;
+  static constexpr int kPlasticFields = SideField::plastic_count;    // delta_o,max, yielded, c_A, delta_p
+  static constexpr int kAdhesionFields = SideField::adhesion_count;  // a
+  static constexpr int kGrowthFields = SideField::growth_count;      // delta_o,prev, eps_c,prev
+  static constexpr int side_fields = SideField::count;
+  static constexpr int pair_fields = PairField::count;
   static constexpr int normal_history_size = pair_fields + 2 * side_fields;
   static constexpr int history_size = normal_history_size + (Eff::friction ? 3 : 0);
 
@@ -115,12 +119,15 @@ struct Mdr {
     MdrSideState<T> st;
     const int b = side_base(s);
     if (Eff::plasticity) {
-      st.delta_o_max = row(b + 0); st.yielded = row(b + 1); st.c_A = row(b + 2); st.delta_p = row(b + 3);
+      st.delta_o_max = row(b + SideField::delta_o_max);
+      st.yielded = row(b + SideField::yielded);
+      st.c_A = row(b + SideField::c_A);
+      st.delta_p = row(b + SideField::delta_p);
     }
-    if (Eff::adhesion) st.a_adh = row(b + kPlasticFields);
+    if (Eff::adhesion) st.a_adh = row(b + SideField::a_adh);
     if (Eff::radius_growth) {
-      st.delta_o_prev = row(b + kPlasticFields + kAdhesionFields);
-      st.eps_prev = row(b + kPlasticFields + kAdhesionFields + 1);
+      st.delta_o_prev = row(b + SideField::delta_o_prev);
+      st.eps_prev = row(b + SideField::eps_prev);
     }
     return st;
   }
@@ -128,12 +135,15 @@ struct Mdr {
                                                 const MdrSideState<T>& st) {
     const int b = side_base(s);
     if (Eff::plasticity) {
-      row(b + 0) = st.delta_o_max; row(b + 1) = st.yielded; row(b + 2) = st.c_A; row(b + 3) = st.delta_p;
+      row(b + SideField::delta_o_max) = st.delta_o_max;
+      row(b + SideField::yielded) = st.yielded;
+      row(b + SideField::c_A) = st.c_A;
+      row(b + SideField::delta_p) = st.delta_p;
     }
-    if (Eff::adhesion) row(b + kPlasticFields) = st.a_adh;
+    if (Eff::adhesion) row(b + SideField::a_adh) = st.a_adh;
     if (Eff::radius_growth) {
-      row(b + kPlasticFields + kAdhesionFields) = st.delta_o_prev;
-      row(b + kPlasticFields + kAdhesionFields + 1) = st.eps_prev;
+      row(b + SideField::delta_o_prev) = st.delta_o_prev;
+      row(b + SideField::eps_prev) = st.eps_prev;
     }
   }
 
@@ -141,206 +151,37 @@ struct Mdr {
   // Write = false only reads (outputs). A second evaluation at the same geometry right after a
   // force pass returns the same force (the state reached is a fixed point of the law).
   // Hot path: one pair-table load (both sides' constants), history fields loaded only where the
-  // regime reads them and stored only where they change.
+  // regime reads them and stored only where they change. The steps are the private members below.
   template <bool Write>
   KOKKOS_FORCEINLINE_FUNCTION MdrContactOutput<T> evaluate(const ContactGeometry<T>& g,
                                                            const HistoryRow<T, Device>& row,
                                                            NormalForce<T>* nf_out) const {
     MdrContactOutput<T> o;
-    const bool is_pair = g.j >= 0;
-    const int nsides = is_pair ? 2 : 1;
-    o.sides = nsides;
-    // sides ordered by global id; a wall has one side (side 0 = particle i)
-    const bool swap = is_pair && !g.i_is_first;
-    const int part[2] = {swap ? g.j : g.i, swap ? g.i : g.j};
-    const T Rs[2] = {swap ? g.R_j : g.R_i, swap ? g.R_i : g.R_j};
-
-    // adhesive hold: an open contact stays while a side keeps an adhesive radius, unless the
-    // surfaces are apart by more than its critical overlap (asked only at delta <= 0: there it
-    // cannot depend on how the split shares a positive overlap, and compressed contacts pay nothing;
-    // a critical overlap above 0, heavy plastic flow with weak adhesion, is reached by the side law)
-    T a_adh_old[2] = {T(0), T(0)};
-    bool adhesive_hold = false;
-    if (Eff::adhesion)
-      for (int s = 0; s < nsides; ++s) {
-        a_adh_old[s] = row(side_base(s) + kPlasticFields);
-        adhesive_hold = adhesive_hold || a_adh_old[s] > T(0);
-      }
-    // (MdrRelease::zero_overlap, the authors' code: no hold, released at delta <= 0)
-    if (release_at_zero_overlap) adhesive_hold = false;
-    if ((!(g.delta > T(0)) && !adhesive_hold) ||
-        (Eff::adhesion && adhesive_hold && !(g.delta > T(0)) && g.delta < critical_overlap(g, row)))
-      return released<Write>(g, row, nf_out);
+    detail::MdrEvaluation<T> e = detail::mdr_order_sides(g);
+    o.sides = e.nsides;
+    if (releases(g, row, e)) return released<Write>(g, row, nf_out);
     o.active = true;
 
     const MdrPairConstants<T>& pc = pairs(g.pair);  // reference: load only the fields used
     const bool grows = Eff::radius_growth && growth.bound();
+    if (grows) load_growth(e);
+    for (int s = 0; s < e.nsides; ++s) e.st[s] = load_side_at_step_start<Write>(row, s, e.a_adh_old[s]);
+    e.dside[0] = g.delta;
+    if (e.is_pair) o.delta_max = split_pair_overlap<Write>(g, row, e);
 
-    // growth of each side's radius, R - R_o (0 without radius growth): delta_o = delta - growth
-    T R0s[2] = {Rs[0], Rs[1]};
-    T growth_of[2] = {T(0), T(0)};
-    if (grows)
-      for (int s = 0; s < nsides; ++s) {
-        R0s[s] = growth.radius0(part[s]);
-        growth_of[s] = growth_in_max * (Rs[s] - R0s[s]);  // delta_max's shift (MdrDeltaMax)
-      }
+    // the sides' results: a pair's from the balanced split (detail/mdr_pair_balance.hpp, the
+    // geometric split as its first guess), a wall's side directly
+    e.before[0] = e.st[0];
+    e.before[1] = e.st[1];
+    if (e.is_pair) balance_pair_sides<Write>(g, row, pc, e);
+    else wall_side(pc, e);
 
-    // per-side history: the fields every regime needs (delta_p: below)
-    MdrSideState<T> st[2];
-    for (int s = 0; s < nsides; ++s) {
-      const int b = side_base(s);
-      if (Eff::plasticity) {
-        st[s].delta_o_max = row(b + 0);
-        st[s].yielded = row(b + 1);
-        if (st[s].yielded != T(0)) st[s].c_A = row(b + 2);  // read only once plastic
-        if (!Write) st[s].delta_p = row(b + 3);             // outputs report it
-      }
-      if (Eff::adhesion) st[s].a_adh = a_adh_old[s];
-      if (Eff::radius_growth) {
-        st[s].delta_o_prev = row(b + kPlasticFields + kAdhesionFields);
-        st[s].eps_prev = row(b + kPlasticFields + kAdhesionFields + 1);
-      }
-    }
-
-    T dside[2] = {g.delta, T(0)};
-    if (is_pair) {
-      // largest total overlap by (19): running maximum of the total delta_o, plus both growths
-      // (MdrDeltaMax::running_max: of the total delta itself, the authors' code)
-      const T shift = growth_of[0] + growth_of[1];
-      T dmax = g.delta;
-      if (Eff::plasticity) {
-        const T old = row(0);
-        const T dmax_o = math::max(old, g.delta - shift);
-        if (Write && dmax_o != old) row(0) = dmax_o;
-        dmax = dmax_o + shift;
-      }
-      // the residual overlaps enter the geometric split only below dmax (mdr_split_overlap)
-      if (Write && Eff::plasticity && dmax > T(0) && !(g.delta >= dmax))
-        for (int s = 0; s < 2; ++s) st[s].delta_p = row(side_base(s) + 3);
-      const MdrSideOverlaps<T> so = mdr_split_overlap(g.delta, dmax, Rs[0], Rs[1], st[0].delta_p, st[1].delta_p);
-      dside[0] = so.d0;
-      dside[1] = so.d1;
-      o.delta_max = dmax;
-    }
-
-    // the sides' results: a pair's from the balanced split (mdr_pair_balance.hpp, the geometric
-    // split as its first guess), a wall's side directly
-    MdrSideState<T> before[2] = {st[0], st[1]};
-    MdrSideResult<T> res[2];
-    if (is_pair) {
-      MdrPairSides<T, Eff::plasticity, Eff::adhesion> ps;
-      for (int s = 0; s < 2; ++s) {
-        const bool side_b = (s == 0) == swap;  // side 0 is material b when swapped; side 1 unless
-        ps.c[s] = side_b ? &pc.side_b : &pc.side_a;
-        // Each side's share of the surface energy: gamma_s = Delta gamma E* / E_eff,s (see the header)
-        ps.gamma[s] = Eff::adhesion ? (side_b ? pc.gamma_b : pc.gamma_a) : T(0);
-        ps.R[s] = Rs[s];
-        ps.growth[s] = growth_of[s];
-        ps.start[s] = st[s];
-      }
-      ps.xi = xi;
-      ps.a_fac = adhesive_radius_factor;
-      ps.delta = g.delta;
-      ps.set_weights();
-      // first guess: the geometric split; once a side yielded, the last pass's ratio (see
-      // mdr_pair_balance.hpp: elastic pairs keep a deterministic guess)
-      // (MdrPairSplit::geometric: the sides at the geometric split itself, one evaluation, and no
-      // warm start to read or keep)
-      T d0 = dside[0];
-      if (geometric_split) {
-        ps(d0);
-      } else {
-        T guess = dside[0];
-        const bool plastic_pair = Eff::plasticity && (st[0].yielded != T(0) || st[1].yielded != T(0));
-        if (Eff::plasticity && plastic_pair) {
-          const T delta_last = row(2);
-          if (delta_last != T(0)) guess = row(1) + row(3) * (g.delta - delta_last);
-        }
-        d0 = mdr_balance_split(ps, g.delta, guess, Rs[0] + Rs[1]);
-      }
-      for (int s = 0; s < 2; ++s) {
-        dside[s] = ps.d[s];
-        st[s] = ps.st[s];
-        res[s] = ps.r[s];
-      }
-      if (Write && Eff::plasticity && !geometric_split) {
-        if (st[0].yielded != T(0) || st[1].yielded != T(0)) {
-          // w = lambda_1 k_1 / (lambda_0 k_0 + lambda_1 k_1) at the root (in [0, 1] while both
-          // stiffnesses are positive; the geometric 1/2 otherwise)
-          const T k0 = ps.lambda[0] * res[0].stiffness, k1 = ps.lambda[1] * res[1].stiffness;
-          const T w = (k0 > T(0) && k1 > T(0)) ? k1 / (k0 + k1) : T(0.5);
-          row(1) = d0;
-          row(2) = g.delta != T(0) ? g.delta : T(1e-30) * (Rs[0] + Rs[1]);  // 0 marks "no last pass"
-          row(3) = w;
-        }
-      }
-    } else {
-      const T gamma_w = Eff::adhesion ? pc.gamma_a : T(0);
-      res[0] = mdr_side_force<Eff::plasticity, Eff::adhesion>(pc.side_a, gamma_w, xi, dside[0], Rs[0], growth_of[0], st[0],
-                                                              adhesive_radius_factor);
-    }
-
-    T F = T(0), a_sum = T(0), area_sum = T(0), a_adh_sum = T(0);
-    for (int s = 0; s < nsides; ++s) {
-      const bool side_b = (s == 0) == swap;  // as above
-      const MdrSideConstants<T>& c = side_b ? pc.side_b : pc.side_a;
-      const MdrSideResult<T>& r = res[s];
-      F += r.F;
-      a_sum += r.a;
-      area_sum += r.area;
-      a_adh_sum += st[s].a_adh;
-      o.yielded += st[s].yielded != T(0) ? 1 : 0;
-      o.side_force[s] = r.F;
-      o.side_overlap[s] = dside[s];
-      o.side_area[s] = r.area;
-      o.side_delta_max[s] = r.delta_max;
-      o.side_delta_p[s] = st[s].delta_p;
-      o.side_radius[s] = r.a;
-      if (Write) {
-        if (grows) {
-          const bool plastic_loading = r.plastic && r.loading && r.F > T(0);
-          if (growth_terms.enabled)  // deterministic mode: this side's slot (s is the global-id order)
-            mdr_growth_add_side(growth, growth_terms.access(is_pair, g.contact, s), part[s], R0s[s], c.inv_3kappa,
-                                r.F, dside[s], Rs[s], plastic_loading, r.plastic, st[s].delta_o_prev, st[s].eps_prev);
-          else
-            mdr_growth_add_side(growth, growth.sums.scatter.access(), part[s], R0s[s], c.inv_3kappa, r.F, dside[s],
-                                Rs[s], plastic_loading, r.plastic, st[s].delta_o_prev, st[s].eps_prev);
-        }
-        store_changed(row, s, before[s], st[s], r.plastic);
-      }
-    }
+    const SideSums sum = finish_sides<Write>(g, row, pc, grows, e, o);
     // every side separated at a gap this step: released now, not at the next evaluation
-    if (Eff::adhesion && !(g.delta > T(0)) && a_adh_sum == T(0)) return released<Write>(g, row, nf_out);
-    const T inv = is_pair ? T(0.5) : T(1);  // 1 / nsides
-    o.force = F * inv;
-    o.area = area_sum * inv;
-    o.mean_pressure = o.area > T(0) ? o.force / o.area : T(0);
-    o.adhesive_radius = a_adh_sum * inv;
-    if (!is_pair) o.delta_max = o.side_delta_max[0];
-
-    if (nf_out) {
-      NormalForce<T> nf;
-      nf.active = true;
-      nf.f = o.force;
-      nf.k_n = T(2) * pc.E_star * a_sum * inv;
-      if (Eff::damping) {
-        nf.damping = pc.c_damp;
-        nf.damping_t = authors_friction ? T(0) : pc.c_damp;
-        nf.damp_compressive_only = true;
-      }
-      if (Eff::friction) {
-        nf.k_t = authors_friction ? k_t_authors : pc.kt_over_kn * nf.k_n;
-        nf.mu = pc.mu;
-        nf.coulomb_on_damped = authors_friction;
-        nf.full_radius_arms = authors_friction;
-      }
-      if (Eff::damping && authors_damping) {
-        // MdrDamping::authors: k_n = E* R* with the current radii (after k_t, which uses MDR's)
-        nf.k_n = pc.E_star * g.R_eff;
-        nf.damp_may_pull = true;
-      }
-      *nf_out = nf;
-    }
+    if (Eff::adhesion && !(g.delta > T(0)) && sum.a_adh == T(0)) return released<Write>(g, row, nf_out);
+    const T inv = e.is_pair ? T(0.5) : T(1);  // 1 / nsides
+    contact_means(o, sum, inv, e.is_pair);
+    if (nf_out) *nf_out = normal_force(g, pc, o.force, sum.a, inv);
     return o;
   }
 
@@ -358,29 +199,20 @@ struct Mdr {
   }
 
   // The contact's critical overlap for its stored state: the sum of its sides' (a wall: its one
-  // side's), mdr_detachment.hpp. Below it (more apart) the contact is released whatever its
+  // side's), detail/mdr_detachment.hpp. Below it (more apart) the contact is released whatever its
   // history; hosts can size neighbour lists with it. Needs Eff::adhesion for a value below the
   // residual overlaps.
   KOKKOS_INLINE_FUNCTION T critical_overlap(const ContactGeometry<T>& g, const HistoryRow<T, Device>& row) const {
-    const bool is_pair = g.j >= 0;
-    const bool swap = is_pair && !g.i_is_first;
-    const int part[2] = {swap ? g.j : g.i, swap ? g.i : g.j};
-    const T Rs[2] = {swap ? g.R_j : g.R_i, swap ? g.R_i : g.R_j};
+    const detail::MdrEvaluation<T> e = detail::mdr_order_sides(g);
     const MdrPairConstants<T>& pc = pairs(g.pair);
     const bool grows = Eff::radius_growth && growth.bound();
     T critical = T(0);
-    for (int s = 0; s < (is_pair ? 2 : 1); ++s) {
-      const bool side_b = (s == 0) == swap;  // as in evaluate
-      const int b = side_base(s);
-      MdrSideState<T> st;
-      if (Eff::plasticity) {
-        st.delta_o_max = row(b + 0);
-        st.yielded = row(b + 1);
-        st.c_A = row(b + 2);
-      }
-      const T grown = grows ? growth_in_max * (Rs[s] - growth.radius0(part[s])) : T(0);
+    for (int s = 0; s < e.nsides; ++s) {
+      const bool side_b = (s == 0) == e.swap;  // as in evaluate
+      const MdrSideState<T> st = load_side(row, s);  // reads delta_o,max, yielded, c_A
+      const T grown = grows ? growth_in_max * (e.Rs[s] - growth.radius0(e.part[s])) : T(0);
       const T gamma_s = Eff::adhesion ? (side_b ? pc.gamma_b : pc.gamma_a) : T(0);
-      critical += mdr_side_critical_overlap<Eff::plasticity>(side_b ? pc.side_b : pc.side_a, gamma_s, Rs[s], grown, st);
+      critical += mdr_side_critical_overlap<Eff::plasticity>(side_b ? pc.side_b : pc.side_a, gamma_s, e.Rs[s], grown, st);
     }
     return critical;
   }
@@ -391,17 +223,17 @@ struct Mdr {
                                                         bool plastic) {
     const int b = side_base(s);
     if (Eff::plasticity) {
-      if (st.delta_o_max != was.delta_o_max) row(b + 0) = st.delta_o_max;
+      if (st.delta_o_max != was.delta_o_max) row(b + SideField::delta_o_max) = st.delta_o_max;
       if (st.yielded != was.yielded) {
-        row(b + 1) = st.yielded;
-        row(b + 2) = st.c_A;
+        row(b + SideField::yielded) = st.yielded;
+        row(b + SideField::c_A) = st.c_A;
       }
-      if (plastic) row(b + 3) = st.delta_p;
+      if (plastic) row(b + SideField::delta_p) = st.delta_p;
     }
-    if (Eff::adhesion && st.a_adh != was.a_adh) row(b + kPlasticFields) = st.a_adh;
+    if (Eff::adhesion && st.a_adh != was.a_adh) row(b + SideField::a_adh) = st.a_adh;
     if (Eff::radius_growth) {
-      row(b + kPlasticFields + kAdhesionFields) = st.delta_o_prev;
-      row(b + kPlasticFields + kAdhesionFields + 1) = st.eps_prev;
+      row(b + SideField::delta_o_prev) = st.delta_o_prev;
+      row(b + SideField::eps_prev) = st.eps_prev;
     }
   }
 
@@ -492,6 +324,267 @@ struct Mdr {
       for (int k = 0; k < kMdrGuardCount; ++k) out[k] = h(k);
     }
     return out;
+  }
+
+ private:
+  // --- the steps of evaluate, in order ---
+
+  // Sums over the sides (finish_sides).
+  struct SideSums {
+    T F = T(0), a = T(0), area = T(0), a_adh = T(0);
+  };
+
+  // Release of an open contact: true when delta <= 0 and no side holds an adhesive radius, or
+  // when the surfaces are apart by more than the critical overlap. The adhesive hold: an open
+  // contact stays while a side keeps an adhesive radius, unless the surfaces are apart by more
+  // than its critical overlap (asked only at delta <= 0: there it cannot depend on how the split
+  // shares a positive overlap, and compressed contacts pay nothing; a critical overlap above 0,
+  // heavy plastic flow with weak adhesion, is reached by the side law). Loads e.a_adh_old.
+  KOKKOS_FORCEINLINE_FUNCTION bool releases(const ContactGeometry<T>& g, const HistoryRow<T, Device>& row,
+                                            detail::MdrEvaluation<T>& e) const {
+    bool adhesive_hold = false;
+    if (Eff::adhesion)
+      for (int s = 0; s < e.nsides; ++s) {
+        e.a_adh_old[s] = row(side_base(s) + SideField::a_adh);
+        adhesive_hold = adhesive_hold || e.a_adh_old[s] > T(0);
+      }
+    // (MdrRelease::zero_overlap, the authors' code: no hold, released at delta <= 0)
+    if (release_at_zero_overlap) adhesive_hold = false;
+    return (!(g.delta > T(0)) && !adhesive_hold) ||
+           (Eff::adhesion && adhesive_hold && !(g.delta > T(0)) && g.delta < critical_overlap(g, row));
+  }
+
+  // Growth of each side's radius, R - R_o (radius growth only): delta_o = delta - growth.
+  KOKKOS_FORCEINLINE_FUNCTION void load_growth(detail::MdrEvaluation<T>& e) const {
+    for (int s = 0; s < e.nsides; ++s) {
+      e.R0s[s] = growth.radius0(e.part[s]);
+      e.growth_of[s] = growth_in_max * (e.Rs[s] - e.R0s[s]);  // delta_max's shift (MdrDeltaMax)
+    }
+  }
+
+  // load_side for the start of a step, reading only what every regime needs: c_A once plastic,
+  // delta_p for outputs only (a force pass reads it where the pair split needs it, and the plastic
+  // regime recomputes it); a_adh: the value releases() loaded.
+  template <bool Write>
+  static KOKKOS_FORCEINLINE_FUNCTION MdrSideState<T> load_side_at_step_start(const HistoryRow<T, Device>& row, int s,
+                                                                             T a_adh) {
+    MdrSideState<T> st;
+    const int b = side_base(s);
+    if (Eff::plasticity) {
+      st.delta_o_max = row(b + SideField::delta_o_max);
+      st.yielded = row(b + SideField::yielded);
+      if (st.yielded != T(0)) st.c_A = row(b + SideField::c_A);  // read only once plastic
+      if (!Write) st.delta_p = row(b + SideField::delta_p);      // outputs report it
+    }
+    if (Eff::adhesion) st.a_adh = a_adh;
+    if (Eff::radius_growth) {
+      st.delta_o_prev = row(b + SideField::delta_o_prev);
+      st.eps_prev = row(b + SideField::eps_prev);
+    }
+    return st;
+  }
+
+  // Pair: the largest total overlap by (19), running maximum of the total delta_o plus both
+  // growths (MdrDeltaMax::running_max: of the total delta itself, the authors' code), and the
+  // geometric split of delta into the sides' overlaps (e.dside). Returns the largest overlap.
+  template <bool Write>
+  KOKKOS_FORCEINLINE_FUNCTION T split_pair_overlap(const ContactGeometry<T>& g, const HistoryRow<T, Device>& row,
+                                                   detail::MdrEvaluation<T>& e) const {
+    const T shift = e.growth_of[0] + e.growth_of[1];
+    T dmax = g.delta;
+    if (Eff::plasticity) {
+      const T old = row(PairField::delta_o_max);
+      const T dmax_o = math::max(old, g.delta - shift);
+      if (Write && dmax_o != old) row(PairField::delta_o_max) = dmax_o;
+      dmax = dmax_o + shift;
+    }
+    // the residual overlaps enter the geometric split only below dmax (mdr_split_overlap)
+    if (Write && Eff::plasticity && dmax > T(0) && !(g.delta >= dmax))
+      for (int s = 0; s < 2; ++s) e.st[s].delta_p = row(side_base(s) + SideField::delta_p);
+    const MdrSideOverlaps<T> so = mdr_split_overlap(g.delta, dmax, e.Rs[0], e.Rs[1], e.st[0].delta_p, e.st[1].delta_p);
+    e.dside[0] = so.d0;
+    e.dside[1] = so.d1;
+    return dmax;
+  }
+
+  using PairSides = MdrPairSides<T, Eff::plasticity, Eff::adhesion>;
+
+  // Pair: the sides at the balanced split (MdrPairSplit::geometric: at the geometric split itself,
+  // one evaluation, and no warm start to read or keep); e.dside, e.st, e.res from its last
+  // evaluation.
+  template <bool Write>
+  KOKKOS_FORCEINLINE_FUNCTION void balance_pair_sides(const ContactGeometry<T>& g, const HistoryRow<T, Device>& row,
+                                                      const MdrPairConstants<T>& pc,
+                                                      detail::MdrEvaluation<T>& e) const {
+    PairSides ps;
+    set_pair_sides(ps, g, pc, e);
+    T d0 = e.dside[0];
+    if (geometric_split) {
+      ps(d0);
+    } else {
+      const T guess = balance_guess(g, row, e);
+      d0 = mdr_balance_split(ps, g.delta, guess, e.Rs[0] + e.Rs[1]);
+    }
+    for (int s = 0; s < 2; ++s) {
+      e.dside[s] = ps.d[s];
+      e.st[s] = ps.st[s];
+      e.res[s] = ps.r[s];
+    }
+    if (Write && Eff::plasticity && !geometric_split) store_balance_warm_start(g, row, ps, e, d0);
+  }
+
+  // The balance solve's two sides: constants, surface energy shares, radii, growths, states.
+  KOKKOS_FORCEINLINE_FUNCTION void set_pair_sides(PairSides& ps, const ContactGeometry<T>& g,
+                                                  const MdrPairConstants<T>& pc,
+                                                  const detail::MdrEvaluation<T>& e) const {
+    for (int s = 0; s < 2; ++s) {
+      const bool side_b = (s == 0) == e.swap;  // side 0 is material b when swapped; side 1 unless
+      ps.c[s] = side_b ? &pc.side_b : &pc.side_a;
+      // Each side's share of the surface energy: gamma_s = Delta gamma E* / E_eff,s (see the header)
+      ps.gamma[s] = Eff::adhesion ? (side_b ? pc.gamma_b : pc.gamma_a) : T(0);
+      ps.R[s] = e.Rs[s];
+      ps.growth[s] = e.growth_of[s];
+      ps.start[s] = e.st[s];
+    }
+    ps.xi = xi;
+    ps.a_fac = adhesive_radius_factor;
+    ps.delta = g.delta;
+    ps.set_weights();
+  }
+
+  // First guess of the balance: the geometric split; once a side yielded, the last pass's ratio
+  // (see detail/mdr_pair_balance.hpp: elastic pairs keep a deterministic guess).
+  static KOKKOS_FORCEINLINE_FUNCTION T balance_guess(const ContactGeometry<T>& g, const HistoryRow<T, Device>& row,
+                                                     const detail::MdrEvaluation<T>& e) {
+    T guess = e.dside[0];
+    const bool plastic_pair = Eff::plasticity && (e.st[0].yielded != T(0) || e.st[1].yielded != T(0));
+    if (Eff::plasticity && plastic_pair) {
+      const T delta_last = row(PairField::split_delta);
+      if (delta_last != T(0))
+        guess = row(PairField::split_d0) + row(PairField::split_slope) * (g.delta - delta_last);
+    }
+    return guess;
+  }
+
+  // Once a side yielded: the root d0, delta and the slope w for the next pass's first guess.
+  static KOKKOS_FORCEINLINE_FUNCTION void store_balance_warm_start(const ContactGeometry<T>& g,
+                                                                   const HistoryRow<T, Device>& row,
+                                                                   const PairSides& ps,
+                                                                   const detail::MdrEvaluation<T>& e, T d0) {
+    if (e.st[0].yielded != T(0) || e.st[1].yielded != T(0)) {
+      // w = lambda_1 k_1 / (lambda_0 k_0 + lambda_1 k_1) at the root (in [0, 1] while both
+      // stiffnesses are positive; the geometric 1/2 otherwise)
+      const T k0 = ps.lambda[0] * e.res[0].stiffness, k1 = ps.lambda[1] * e.res[1].stiffness;
+      const T w = (k0 > T(0) && k1 > T(0)) ? k1 / (k0 + k1) : T(0.5);
+      row(PairField::split_d0) = d0;
+      row(PairField::split_delta) = g.delta != T(0) ? g.delta : T(1e-30) * (e.Rs[0] + e.Rs[1]);  // 0 marks "no last pass"
+      row(PairField::split_slope) = w;
+    }
+  }
+
+  // Wall: the one side against the wall as a rigid flat.
+  KOKKOS_FORCEINLINE_FUNCTION void wall_side(const MdrPairConstants<T>& pc, detail::MdrEvaluation<T>& e) const {
+    const T gamma_w = Eff::adhesion ? pc.gamma_a : T(0);
+    e.res[0] = mdr_side_force<Eff::plasticity, Eff::adhesion>(pc.side_a, gamma_w, xi, e.dside[0], e.Rs[0],
+                                                              e.growth_of[0], e.st[0], adhesive_radius_factor);
+  }
+
+  // Per side: the outputs and sums, then (Write) the growth terms and the changed history.
+  template <bool Write>
+  KOKKOS_FORCEINLINE_FUNCTION SideSums finish_sides(const ContactGeometry<T>& g, const HistoryRow<T, Device>& row,
+                                                    const MdrPairConstants<T>& pc, bool grows,
+                                                    detail::MdrEvaluation<T>& e, MdrContactOutput<T>& o) const {
+    SideSums sum;
+    for (int s = 0; s < e.nsides; ++s) {
+      report_side(o, sum, e, s);
+      if (Write) commit_side(g, row, pc, grows, e, s);
+    }
+    return sum;
+  }
+
+  static KOKKOS_FORCEINLINE_FUNCTION void report_side(MdrContactOutput<T>& o, SideSums& sum,
+                                                      const detail::MdrEvaluation<T>& e, int s) {
+    const MdrSideResult<T>& r = e.res[s];
+    sum.F += r.F;
+    sum.a += r.a;
+    sum.area += r.area;
+    sum.a_adh += e.st[s].a_adh;
+    o.yielded += e.st[s].yielded != T(0) ? 1 : 0;
+    o.side_force[s] = r.F;
+    o.side_overlap[s] = e.dside[s];
+    o.side_area[s] = r.area;
+    o.side_delta_max[s] = r.delta_max;
+    o.side_delta_p[s] = e.st[s].delta_p;
+    o.side_radius[s] = r.a;
+  }
+
+  // The side's growth terms (deterministic mode: its slot, s in global-id order) and history.
+  KOKKOS_FORCEINLINE_FUNCTION void commit_side(const ContactGeometry<T>& g, const HistoryRow<T, Device>& row,
+                                               const MdrPairConstants<T>& pc, bool grows,
+                                               detail::MdrEvaluation<T>& e, int s) const {
+    const MdrSideResult<T>& r = e.res[s];
+    MdrSideState<T>& st = e.st[s];
+    if (grows) {
+      const bool side_b = (s == 0) == e.swap;  // as in set_pair_sides
+      const MdrSideConstants<T>& c = side_b ? pc.side_b : pc.side_a;
+      const bool plastic_loading = r.plastic && r.loading && r.F > T(0);
+      if (growth_terms.enabled)
+        mdr_growth_add_side(growth, growth_terms.access(e.is_pair, g.contact, s), e.part[s], e.R0s[s], c.inv_3kappa,
+                            r.F, e.dside[s], e.Rs[s], plastic_loading, r.plastic, st.delta_o_prev, st.eps_prev);
+      else
+        mdr_growth_add_side(growth, growth.sums.scatter.access(), e.part[s], e.R0s[s], c.inv_3kappa, r.F,
+                            e.dside[s], e.Rs[s], plastic_loading, r.plastic, st.delta_o_prev, st.eps_prev);
+    }
+    store_changed(row, s, e.before[s], st, r.plastic);
+  }
+
+  // The contact's values: pair means over the two sides.
+  static KOKKOS_FORCEINLINE_FUNCTION void contact_means(MdrContactOutput<T>& o, const SideSums& sum, T inv,
+                                                        bool is_pair) {
+    o.force = sum.F * inv;
+    o.area = sum.area * inv;
+    o.mean_pressure = o.area > T(0) ? o.force / o.area : T(0);
+    o.adhesive_radius = sum.a_adh * inv;
+    if (!is_pair) o.delta_max = o.side_delta_max[0];
+  }
+
+  // What the kernel applies: the force, k_n = 2 E* a-bar (a_sum inv: the sides' mean half-width),
+  // damping and friction (see the header; the authors' conventions: contact_conventions below).
+  KOKKOS_FORCEINLINE_FUNCTION NormalForce<T> normal_force(const ContactGeometry<T>& g, const MdrPairConstants<T>& pc,
+                                                          T force, T a_sum, T inv) const {
+    NormalForce<T> nf;
+    nf.active = true;
+    nf.f = force;
+    nf.k_n = T(2) * pc.E_star * a_sum * inv;
+    if (Eff::damping) {
+      nf.damping = pc.c_damp;
+      nf.damping_t = authors_friction ? T(0) : pc.c_damp;
+      nf.damp_compressive_only = true;
+    }
+    if (Eff::friction) {
+      nf.k_t = authors_friction ? k_t_authors : pc.kt_over_kn * nf.k_n;
+      nf.mu = pc.mu;
+    }
+    if (Eff::damping && authors_damping) {
+      // MdrDamping::authors: k_n = E* R* with the current radii (after k_t, which uses MDR's)
+      nf.k_n = pc.E_star * g.R_eff;
+    }
+    return nf;
+  }
+};
+
+// The authors' kernel conventions (MdrDamping::authors: the damped force may pull;
+// MdrFriction::authors: Coulomb bound on the damped force, full-radius rolling arms), from the
+// options Mdr::create was given.
+template <class T, class Eff, class Device>
+struct contact_conventions<Mdr<T, Eff, Device>> {
+  using type = ContactConventions;
+  static type of(const Mdr<T, Eff, Device>& m) {
+    type c;
+    c.damp_may_pull = Eff::damping && m.authors_damping;
+    c.coulomb_on_damped = Eff::friction && m.authors_friction;
+    c.full_radius_arms = Eff::friction && m.authors_friction;
+    return c;
   }
 };
 

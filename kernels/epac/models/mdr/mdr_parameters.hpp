@@ -3,10 +3,10 @@
 // (one particle against a rigid flat), per-material-pair constants (adhesion, damping, friction),
 // the options where the paper and the authors' implementation differ, and validation.
 //
-// Every side of an MDR contact is a particle against a rigid flat (mdr-reference-notes.md), so a
+// Every side of an MDR contact is a particle against a rigid flat (docs/models.md "MDR conventions"), so a
 // side uses E_eff = E/(1 - nu^2) of its own particle, never the composite modulus of two bodies.
 #include <epac/core/root_solve.hpp>
-#include <epac/models/mdr/mdr_ellipse.hpp>
+#include <epac/models/mdr/detail/mdr_ellipse.hpp>
 #include <epac/params/material.hpp>
 #include <epac/params/restitution_damping.hpp>
 #include <epac/params/validation.hpp>
@@ -42,7 +42,7 @@ enum class MdrYieldOnset {
 // Where a pair's rigid flat sits (mdr_pair_balance.hpp, mdr_pair_split.hpp).
 enum class MdrPairSplit {
   // Default. The flat where the sides' scaled forces balance, lambda_0 F_0 = lambda_1 F_1: the
-  // pair is passive (issue 10).
+  // pair is passive.
   balanced,
   // The authors' choice: the radical plane while loading (epac's repaired interpolation towards the
   // residuals below the largest overlap), with the mean of the two side forces. Not work-conjugate:

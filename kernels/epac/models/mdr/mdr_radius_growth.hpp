@@ -28,7 +28,7 @@
 //   that have not yielded: (37) conserves the volume of plastic (incompressible) deformation, and
 //   an elastic contact's cap is taken up elastically (Hertz). Counting them, the cap-volume term
 //   grew R on every elastic loading once delta/R exceeded ~0.02, and since R never shrinks, a
-//   closed cycle of a non-yielding sphere returned 0.63% more work than it took (issue 10).
+//   closed cycle of a non-yielding sphere returned 0.63% more work than it took.
 // Update: dR = max(numerator / D, 0), D = denominator - 4 pi R^2, with the guards of MdrOptions
 // (D <= -denominator_floor 4 pi R^2; R <= radius_cap R_o; V >= volume_floor V_o), each counted.
 #include <epac/compute/particle_sums.hpp>

@@ -11,7 +11,7 @@
 // must keep pairs whose gap is up to |alpha_jp| (see nan2022_pair_report: alpha_je).
 #include <epac/models/contact_geometry.hpp>
 #include <epac/models/effects.hpp>
-#include <epac/models/nan2022/nan2022_normal_law.hpp>
+#include <epac/models/nan2022/detail/nan2022_normal_law.hpp>
 #include <epac/params/nan2022/nan2022_parameters.hpp>
 #include <epac/state/contact_history.hpp>
 

@@ -4,7 +4,7 @@
 // line by iterating Nan (29) with (45)/(49)), k_p, the per-pair constants table entry, its
 // validation, and a per-pair report at a given R* (f_y, alpha_y, k_cl, CY of Nan (81), the
 // adhesion-induced yield criterion Nan (80)).
-#include <epac/models/nan2022/nan2022_unloading.hpp>
+#include <epac/models/nan2022/detail/nan2022_unloading.hpp>
 #include <epac/params/material.hpp>
 #include <epac/params/restitution_damping.hpp>
 #include <epac/params/validation.hpp>

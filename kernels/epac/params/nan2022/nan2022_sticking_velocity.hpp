@@ -7,7 +7,7 @@
 // If f_y < f_0 (adhesion-induced yield, Nan Sec. 4; CY below ~0.74 with Nan (52)) V_y^2 < 0: the
 // contact yields at any impact speed; V_y is reported as 0 and always_yields is set. Every case
 // of Nan Table 6 is of this kind.
-#include <epac/models/nan2022/nan2022_unloading.hpp>
+#include <epac/models/nan2022/detail/nan2022_unloading.hpp>
 #include <epac/params/nan2022/nan2022_parameters.hpp>
 
 #include <cmath>

@@ -4,7 +4,7 @@
 // detach (the contact radius a shrinks by (48)), and the contact separates below the critical
 // radius a_c of (15). The contact radius a is per-contact history.
 //
-// Conventions (mdr-reference-notes.md, "Reading Part I where its text is ambiguous"):
+// Conventions (docs/models.md, "Reading Part I where its text is ambiguous"):
 // - "No tensile springs" holds when the non-adhesive half-width at the current depth,
 //   a_na = (B/A) sqrt(d (A - d)), reaches the stored a (all springs in compression). Then
 //   a = a_na (Appendix E's "a = B/2" is this at d = A/2, the plastic-loading depth).
@@ -20,7 +20,7 @@
 //   state stores a = a_fac a_na, and a stored radius is used at most as a_fac B/2, so tension
 //   starts only once a_na has fallen below a_fac times its largest value.
 #include <epac/core/root_solve.hpp>
-#include <epac/models/mdr/mdr_ellipse.hpp>
+#include <epac/models/mdr/detail/mdr_ellipse.hpp>
 
 namespace epac {
 
@@ -37,7 +37,7 @@ KOKKOS_INLINE_FUNCTION T mdr_critical_extension(T E, T gamma, T a) {
 
 // MDR (15) with g_1D of (44): the critical radius a_c where d g_1D/da = xi sqrt(pi gamma/(2 E a)).
 // Squaring gives the cubic 2 E A^2 a^3 + xi^2 pi gamma B^2 a^2 - xi^2 pi gamma B^4/4 = 0 (xi = 1 is
-// the cubic of mdr-reference-notes.md; xi = 3 replaces gamma by 9 gamma). With a = u B/2 it reads
+// the cubic of docs/models.md "Reading Part I"; xi = 3 replaces gamma by 9 gamma). With a = u B/2 it reads
 //   lambda u^3 + u^2 - 1 = 0,   lambda = E A^2 / (xi^2 pi gamma B),
 // increasing in u >= 0 with one root in (0, 1]: lambda u^3 <= 1 and u^2 <= 1 give
 // u <= min(1, lambda^(-1/3)), and max(lambda u^3, u^2) >= 1/2 gives u >= min((2 lambda)^(-1/3),

@@ -1,11 +1,11 @@
 #pragma once
 // Particle pairs in MDR: a rigid flat at the contact plane splits the pair's apparent overlap
-// delta into two sides, each a particle-flat contact with its own history (mdr-reference-notes.md
-// "Particle pairs"). Side 0 is the particle with the smaller global id
+// delta into two sides, each a particle-flat contact with its own history (docs/models.md, "MDR
+// conventions", row "particle pairs"). Side 0 is the particle with the smaller global id
 // (ContactGeometry::i_is_first), so a side keeps its history across list rebuilds.
 //
-// This file is the geometric split (the authors' rule, repaired as below). Since issue 10 it is
-// the first guess of the balanced split (mdr_pair_balance.hpp), which places the flat where the
+// This file is the geometric split (the authors' rule, repaired as below). It is the first
+// guess of the balanced split (mdr_pair_balance.hpp), which places the flat where the
 // sides' scaled forces balance: that makes the pair passive; the geometric split alone, with the
 // mean force, returned more work than it took on ~1% of random plastic cycles. For two equal
 // spheres with equal histories the guess is already the balance.
@@ -19,7 +19,7 @@
 //   t = (delta - dmax) / ((delta_p,0 + delta_p,1) - dmax). That has two defects:
 //   (a) when the residuals sum to dmax or more (no elastic recovery left, or a side whose residual
 //       exceeds its present height after its radius grew) the denominator is 0 or positive; floored
-//       it made t ~ 1e6 and threw one side 1e7 R deep (issue 10: Inf/NaN with radius growth);
+//       it made t ~ 1e6 and threw one side 1e7 R deep (Inf/NaN with radius growth);
 //   (b) on an elastic pair of unequal spheres the unloading path (linear in delta) is not the
 //       loading path (the radical plane, nonlinear in delta), so the pair force is two-valued and a
 //       closed cycle returned +0.12% of its work.

@@ -2,9 +2,9 @@
 // Particle pairs in MDR: where the rigid flat between the two sides sits. The flat splits the
 // pair's apparent overlap delta into d_0 + d_1 = delta; each side is an MDR particle-flat contact
 // (mdr_side_force) and the pair force is the mean of the two side forces (the authors' code,
-// mdr-reference-notes.md "Particle pairs").
+// docs/models.md "The authors' implementation").
 //
-// Why a balance and not a geometric split (issue 10). The authors put the flat on the radical
+// Why a balance and not a geometric split. The authors put the flat on the radical
 // plane while loading and interpolate it towards the sides' residual overlaps while unloading
 // (mdr_pair_split.hpp keeps that rule: it is the first guess here). A prescribed split with the
 // mean force is not work-conjugate: F d(delta) differs from sum_s F_s d(d_s) whenever F_0 != F_1,
@@ -52,7 +52,7 @@
 // pair evaluation for 34% of contact-steps over the run, two for 65%; 343 ns per contact-step
 // against 250 ns for the geometric split alone, LAMMPS's `granular mdr` 639 ns).
 #include <epac/core/kokkos_compat.hpp>
-#include <epac/models/mdr/mdr_side_force.hpp>
+#include <epac/models/mdr/detail/mdr_side_force.hpp>
 
 namespace epac {
 

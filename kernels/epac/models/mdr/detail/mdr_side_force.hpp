@@ -10,8 +10,8 @@
 //   force of that step from the current delta (notes: "delta = delta_Y" means c_A only);
 // - fully plastic: a_max (36), A, B (28), p_Y (16)+(21), delta_R (34), delta_1D^e (35); force (30);
 //   unloading and reloading below delta_max run on the fixed ellipse of delta_max, so they retrace.
-#include <epac/models/mdr/mdr_adhesion.hpp>
-#include <epac/models/mdr/mdr_ellipse.hpp>
+#include <epac/models/mdr/detail/mdr_adhesion.hpp>
+#include <epac/models/mdr/detail/mdr_ellipse.hpp>
 #include <epac/models/mdr/mdr_parameters.hpp>
 
 namespace epac {
@@ -114,7 +114,7 @@ struct MdrSideResult {
 // halving a 2e-4 R_o step at E/Y = 50); with (19), delta - delta_max = delta_o - delta_o,max does
 // not see the lag. Without growth the two definitions coincide.
 //
-// Hot path (issue: per side, only the arithmetic of the current regime): the elastic regime is
+// Hot path (per side, only the arithmetic of the current regime): the elastic regime is
 // one asin and two sqrt (ellipse force and width); plastic loading (delta at delta_max, the
 // common compaction step) is d = A/2 exactly, where (30) is E A B pi/8 and the width B/2, so it
 // costs one exp and two sqrt and no inverse trigonometric function; unloading adds the asin.

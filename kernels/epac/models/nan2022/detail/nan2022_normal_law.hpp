@@ -18,7 +18,7 @@
 // meet there by Nan (15)). We test the overlap, not the forces, because with the default
 // k_p = k_el the two lines coincide before yield and the force test cannot tell loading from
 // unloading.
-#include <epac/models/nan2022/nan2022_unloading.hpp>
+#include <epac/models/nan2022/detail/nan2022_unloading.hpp>
 
 namespace epac {
 

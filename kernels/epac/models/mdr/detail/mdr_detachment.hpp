@@ -1,5 +1,5 @@
 #pragma once
-// When an adhesive MDR contact detaches, from its state alone (issue 10 item 1): the critical
+// When an adhesive MDR contact detaches, from its state alone: the critical
 // overlap below which no adhesive equilibrium exists, whatever path led there (a single step from
 // deep contact to far apart included), so the release does not depend on how long the host's
 // neighbour list keeps the pair.
@@ -20,7 +20,7 @@
 //   chain is broken whatever the split does with the individual sides. The balance usually lets go
 //   earlier: when the weaker side reaches its own critical overlap, its partner is still above its
 //   own (the sum is the bound that holds for any split).
-#include <epac/models/mdr/mdr_side_force.hpp>
+#include <epac/models/mdr/detail/mdr_side_force.hpp>
 
 namespace epac {
 
