@@ -38,6 +38,14 @@ bool start_history(const Scene& scene, const Model& model, const Particles<T, De
   }
   const HistoryFromOverlapsReport rep =
       history_from_overlaps(model, p, det.pairs, det.pair_history, w, det.walls, det.wall_history);
+  if (rep.increments == 0) {  // a law without contact history: its contacts start as they are
+    if (info)
+      std::printf("initial history: %d contacts start overlapping (%d pairs, %d walls), largest overlap %.3g R; "
+                  "model %s keeps no contact history, so nothing is loaded\n",
+                  census.contacts(), census.pair_contacts, census.wall_contacts, census.max_overlap_ratio,
+                  Model::name);
+    return false;
+  }
   ih.applied = true;
   ih.increments = rep.increments;
   ih.max_radius_ratio = rep.max_radius_ratio;
