@@ -1,4 +1,4 @@
-// Accuracy versus cost (promise 1): for every model, precision and time step we offer, the
+// Accuracy versus cost (docs/performance.md): for every model, precision and time step we offer, the
 // measured error of an impact next to the measured cost of the force kernel, in one run.
 //   error: a sphere (the Ning particle of Nan Table 2: R = 2.45 um, E = 1.2 GPa, nu = 0.3,
 //          Gamma = 0.2 J/m^2, sigma_y = 35.3 MPa) hits a rigid wall at 5 m/s; rebound

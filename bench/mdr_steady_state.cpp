@@ -2,8 +2,8 @@
 // of bench_model_cost.cpp, for instruction counts on a shared machine (wall times there are
 // noise): three warm passes (the first one switches every contact to plastic), then `passes`
 // measured passes in measured_passes<1>, the callgrind toggle:
-//   OMP_NUM_THREADS=1 valgrind --tool=callgrind --toggle-collect='*measured_passes<1*' \
-//     ./build/bench/epac-mdr-steady noadh 3
+//   OMP_NUM_THREADS=1 valgrind --tool=callgrind --toggle-collect='*measured_passes<1*'
+//       ./build/bench/epac-mdr-steady noadh 3   (one command line)
 // Instructions per contact-step = the callgrind total / (passes x contacts). Without valgrind it
 // prints the wall time per contact-step. Variants: all, nogrowth, noadh (no adhesion, no growth),
 // noadhgrowth (no adhesion, growth), float (all effects).

@@ -1,49 +1,78 @@
 #!/usr/bin/env bash
-# Compile-only check of the library for a GPU: configures epac with a Kokkos that has the CUDA
-# backend and builds the library tests (not the drivers or benchmarks) with warnings as errors,
-# nvcc's own diagnostics included (e.g. 20011/20013: a host function called from a
-# __host__ __device__ one; 20012: an annotation on a defaulted function). Nothing is run.
+# Compile-and-link check of epac for a GPU (CUDA): configures epac with a Kokkos that has the CUDA
+# backend and builds every target (library tests, driver tests, benchmarks, epac-run and the
+# other tools, the LAMMPS plugin's engine, plus the benchmark built on request only) with
+# warnings as errors, nvcc's own diagnostics included (e.g. 20011/20013: a host function called
+# from a __host__ __device__ one; 20012: an annotation on a defaulted function). Nothing is run
+# (docs/gpu.md).
 #   bash cmake/check-device-compile.sh [KOKKOS_CUDA_PREFIX]
-# The prefix may also come from EPAC_KOKKOS_CUDA_ROOT or Kokkos_ROOT; otherwise the usual
-# prefixes are searched. Without a Kokkos with CUDA it prints "skipped: no Kokkos with CUDA" and
-# exits 0. Environment: EPAC_DEVICE_BUILD_DIR (default build-device), EPAC_DEVICE_TARGETS (default:
-# every library test target), EPAC_DEVICE_FLAGS (default -Werror -Xcudafe --promote_warnings, for
-# nvcc_wrapper), EPAC_CMAKE_ARGS (extra configure arguments).
+# The prefix may also come from EPAC_KOKKOS_CUDA_ROOT; otherwise Kokkos with CUDA is bootstrapped
+# (cmake/bootstrap-kokkos-cuda.sh, AMPERE80). Without a CUDA toolkit it prints "skipped: no CUDA
+# toolkit" and exits 0, except under CI=true, where a missing toolkit is a failure.
+# Any line of the build that reads as a warning (host compiler, nvcc, ptxas, nvlink) fails it too.
+# Environment: EPAC_DEVICE_BUILD_DIR (default build-device-check), EPAC_DEVICE_TARGETS (default:
+# all, and epac-mdr-steady), EPAC_DEVICE_FLAGS (default -Xcudafe --promote_warnings -Werror),
+# EPAC_DEVICE_LAMMPS_SOURCE_DIR (LAMMPS src/: the whole plugin, not yet tried; default: its
+# engine only), EPAC_JOBS (default: nproc), EPAC_CMAKE_ARGS (extra configure arguments).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+t0=$(date +%s)
 
 has_cuda() { grep -qs '^#define KOKKOS_ENABLE_CUDA$' "$1/include/KokkosCore_config.h"; }
 prefix=""
-candidates=("${1:-}" "${EPAC_KOKKOS_CUDA_ROOT:-}" "${Kokkos_ROOT:-}")
-IFS=: read -r -a cpp <<< "${CMAKE_PREFIX_PATH:-}"
-candidates+=("${cpp[@]}" /usr/local /opt/kokkos /usr/local/kokkos /opt/kokkos-cuda)
-for c in "${candidates[@]}"; do
-  [ -n "$c" ] || continue
-  if has_cuda "$c"; then prefix="$c"; break; fi
+for c in "${1:-}" "${EPAC_KOKKOS_CUDA_ROOT:-}"; do
+  if [ -n "$c" ]; then
+    has_cuda "$c" || { echo "error: $c is not a Kokkos with CUDA (no KOKKOS_ENABLE_CUDA in include/KokkosCore_config.h)"; exit 1; }
+    prefix="$c"; break
+  fi
 done
 if [ -z "$prefix" ]; then
-  echo "skipped: no Kokkos with CUDA (searched: ${candidates[*]})"
-  exit 0
+  rc=0
+  prefix="$(bash "$root/cmake/bootstrap-kokkos-cuda.sh")" || rc=$?
+  if [ "$rc" -eq 3 ]; then
+    if [ "${CI:-}" = true ]; then
+      echo "error: no CUDA toolkit (nvcc), and CI=true: CI machines have one (/usr/local/cuda*), so this is a failure"
+      exit 1
+    fi
+    echo "skipped: no CUDA toolkit (no nvcc in \$CUDA_HOME, PATH or /usr/local/cuda*)"
+    exit 0
+  elif [ "$rc" -ne 0 ]; then
+    echo "error: the CUDA Kokkos bootstrap failed (cmake/bootstrap-kokkos-cuda.sh)"
+    exit 1
+  fi
 fi
 
-compiler="${CXX:-}"
-if [ -x "$prefix/bin/nvcc_wrapper" ]; then compiler="$prefix/bin/nvcc_wrapper"; fi
-build="${EPAC_DEVICE_BUILD_DIR:-$root/build-device}"
-echo "Kokkos with CUDA at $prefix; compiler ${compiler:-default}; build dir $build"
+compiler="$prefix/bin/nvcc_wrapper"
+build="${EPAC_DEVICE_BUILD_DIR:-$root/build-device-check}"
+jobs="${EPAC_JOBS:-$(nproc)}"
+mkdir -p "$build"
+echo "Kokkos with CUDA at $prefix ($(sed -n 's/.*cuda=\([0-9.]*\).*arch=\(.*\)/CUDA \1, \2/p' "$prefix/.epac-kokkos-ok" 2>/dev/null)); build dir $build"
 # -Werror for the host compiler (nvcc_wrapper passes it on) and --promote_warnings for nvcc's
-# front end (cudafe: the cross-execution-space diagnostics 20011-20014). Both spellings are ones
-# nvcc_wrapper knows (it would hand an unknown nvcc flag such as --Werror to the host compiler).
-flags="${EPAC_DEVICE_FLAGS:--Werror -Xcudafe --promote_warnings}"
+# front end (cudafe: the cross-execution-space diagnostics 20011-20014). In this order: CMake's
+# compiler check strips "-Werror <next word>" and g++ would then reject a lone --promote_warnings.
+flags="${EPAC_DEVICE_FLAGS:--Xcudafe --promote_warnings -Werror}"
+lammps=()
+if [ -n "${EPAC_DEVICE_LAMMPS_SOURCE_DIR:-}" ]; then lammps=(-DEPAC_LAMMPS_SOURCE_DIR="$EPAC_DEVICE_LAMMPS_SOURCE_DIR"); fi
 # shellcheck disable=SC2086
-cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DKokkos_ROOT="$prefix" \
-  ${compiler:+-DCMAKE_CXX_COMPILER="$compiler"} -DCMAKE_CXX_FLAGS="$flags" \
-  -DEPAC_BUILD_TESTS=ON -DEPAC_BUILD_BENCH=OFF -DEPAC_BUILD_DRIVERS=OFF ${EPAC_CMAKE_ARGS:-}
-targets="${EPAC_DEVICE_TARGETS:-}"
-if [ -z "$targets" ]; then
-  # every executable under tests/ (the library tests; the driver tests are off with the drivers)
-  targets="$(cmake --build "$build" --target help | sed -n 's/^\.\.\. \(test_[A-Za-z0-9_]*\).*/\1/p' | tr '\n' ' ')"
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DKokkos_ROOT="$prefix" -DCMAKE_CXX_COMPILER="$compiler" \
+  -DCMAKE_CXX_FLAGS="$flags" -DEPAC_BUILD_TESTS=ON -DEPAC_BUILD_BENCH=ON -DEPAC_BUILD_DRIVERS=ON \
+  "${lammps[@]}" ${EPAC_CMAKE_ARGS:-} > "$build/epac-configure.log" 2>&1 \
+  || { cat "$build/epac-configure.log"; echo "error: configure failed"; exit 1; }
+targets="${EPAC_DEVICE_TARGETS:-all epac-mdr-steady}"
+echo "building: $targets (-j $jobs)"
+log="$build/epac-device-build.log"
+keep_going=(-- -k)  # every error of the tree in one run (Makefiles; Ninja: -k 0)
+[ -f "$build/build.ninja" ] && keep_going=(-- -k 0)
+set +e
+# shellcheck disable=SC2086
+cmake --build "$build" -j "$jobs" --target $targets "${keep_going[@]}" > "$log" 2>&1
+rc=$?
+set -e
+# warnings that did not stop the build (nvcc driver, ptxas, nvlink, linker) fail the check too
+warnings="$(grep -E '(^|[ :])([Ww]arning)( #[0-9]+-D)? ?:' "$log" || true)"
+if [ "$rc" -ne 0 ] || [ -n "$warnings" ]; then
+  grep -E -B2 -A6 '(error|[Ww]arning)( #[0-9]+-D)? ?:|Error [0-9]' "$log" | head -n 300
+  echo "device compile check FAILED after $(( $(date +%s) - t0 )) s (build exit $rc; full log: $log)"
+  exit 1
 fi
-echo "building: $targets"
-# shellcheck disable=SC2086
-cmake --build "$build" -j "$(nproc)" --target $targets
-echo "device compile check passed: $targets"
+echo "device compile check passed in $(( $(date +%s) - t0 )) s: $targets"

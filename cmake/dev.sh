@@ -4,6 +4,10 @@
 #   bash cmake/dev.sh run [SCENE.toml] [epac-run options]   runs the driver (default scene)
 #   bash cmake/dev.sh test [ctest options]                  builds and runs every test
 #   bash cmake/dev.sh bench [benchmark options]             runs the contact-kernel benchmarks
+#   bash cmake/dev.sh device                                builds for this machine's NVIDIA GPU and
+#       runs the test suite, the benchmarks and the scaling script on it (cmake/device-run.sh)
+# `test` includes the GPU compile check (ctest device_compile_check: every target compiled and
+# linked with nvcc, warnings as errors; skipped without a CUDA toolkit, a failure then if CI=true).
 # Environment: EPAC_BUILD_DIR (default build), EPAC_THREADS (default: all cores; sets
 # OMP_NUM_THREADS), EPAC_CMAKE_ARGS (extra configure arguments, e.g. -DKokkos_ROOT=...),
 # EPAC_LAMMPS (default on; off: `test` neither builds LAMMPS nor runs the plugin's tests).
@@ -15,6 +19,9 @@ threads="${EPAC_THREADS:-${OMP_NUM_THREADS:-$(nproc)}}"
 export OMP_NUM_THREADS="$threads" OMP_PROC_BIND="${OMP_PROC_BIND:-false}"
 
 bash "$root/cmake/install-deps.sh"
+if [ "$cmd" = device ]; then
+  exec bash "$root/cmake/device-run.sh" "$@"  # its own build dir and Kokkos (CUDA)
+fi
 lammps_args=()
 if [ "$cmd" = test ] && [ "${EPAC_LAMMPS:-on}" != off ]; then
   # the LAMMPS plugin's tests (tests/lammps/) need LAMMPS itself: built once, cached
@@ -48,7 +55,7 @@ case "$cmd" in
     exec "$build/bench/epac-bench-contacts" "$@"
     ;;
   *)
-    echo "usage: bash cmake/dev.sh run [SCENE.toml] [options] | test [ctest options] | bench [options]" >&2
+    echo "usage: bash cmake/dev.sh run [SCENE.toml] [options] | test [ctest options] | bench [options] | device" >&2
     exit 2
     ;;
 esac

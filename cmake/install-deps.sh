@@ -4,7 +4,7 @@
 # Extra package names given as arguments are installed too (drivers/lammps/build.sh: Open MPI).
 set -euo pipefail
 pkgs=(cmake g++ make catch2 libbenchmark-dev libeigen3-dev libtomlplusplus-dev libcli11-dev
-      nlohmann-json3-dev python3-matplotlib dpkg-dev xz-utils "$@")
+      nlohmann-json3-dev python3-matplotlib dpkg-dev xz-utils clang-format "$@")
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")

@@ -12,7 +12,8 @@ t(1) / (N t(N)); weak, t(1) / t(N) (times of the best repeats).
 
 On a GPU build (the summary's backend is not a host backend) thread counts mean nothing: the
 script runs the device once per size instead (strong: the one scene; weak: the sizes of the
-host sweep), with the same JSON and plot, so it runs unchanged there.
+host sweep, or the fcc sizes of --device-ncell: 4 n^3 spheres each), with the same JSON and plot,
+so it runs unchanged there (cmake/device-run.sh uses --device-ncell 10 20 30).
 
 Usage:
   python3 bench/scaling/run_scaling.py [--threads 1 2] [--repeats 3] [--steps 700] [--law hm]
@@ -109,6 +110,8 @@ def main():
     ap.add_argument("--png", default="scaling.png")
     ap.add_argument("--exe", default=None)
     ap.add_argument("--smoke", action="store_true", help="tiny and fast, for CI (checks the JSON only)")
+    ap.add_argument("--device-ncell", type=int, nargs="+", default=None,
+                    help="on a GPU build: the fcc sizes (cells per side) of the size sweep")
     args = ap.parse_args()
 
     exe = args.exe or os.path.join(os.environ.get("EPAC_BUILD_DIR", os.path.join(ROOT, "build")), "drivers", "epac-run")
@@ -134,7 +137,9 @@ def main():
         strong_cfg = {(t, strong_ncell): scene(strong_ncell) for t in threads}
         if host:
             weak_cfg = {(t, weak_ncell(t)): scene(weak_ncell(t)) for t in threads}
-        else:  # one device: weak scaling becomes a size sweep at the host sweep's sizes
+        elif args.device_ncell:  # one device: weak scaling becomes a size sweep
+            weak_cfg = {(1, n): scene(n) for n in args.device_ncell}
+        else:  # at the host sweep's sizes
             weak_cfg = {(1, weak_ncell(t)): scene(weak_ncell(t)) for t in (args.threads or [1, 2, 4, 8])}
         result = {"backend": probe["backend"], "host": host, "law": "hertz_mindlin", "steps": steps,
                   "repeats": repeats, "strong": sweep(exe, strong_cfg, repeats, work, "strong"),

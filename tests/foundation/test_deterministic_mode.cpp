@@ -150,7 +150,8 @@ Result<T> run(const Setup& st, const std::vector<int>& pair_order, const std::ve
   {
     auto x = Kokkos::create_mirror_view(p.x), v = Kokkos::create_mirror_view(p.v), w = Kokkos::create_mirror_view(p.omega);
     auto m = Kokkos::create_mirror_view(p.mass), I = Kokkos::create_mirror_view(p.inertia);
-    auto r0 = Kokkos::create_mirror_view(p.radius0), mat = Kokkos::create_mirror_view(p.material);
+    auto r0 = Kokkos::create_mirror_view(p.radius0);
+    auto mat = Kokkos::create_mirror_view(p.material);  // int view: its own declaration
     auto gid = Kokkos::create_mirror_view(p.gid);
     for (int i = 0; i < n; ++i) {
       for (int d = 0; d < 3; ++d) { x(i, d) = T(st.x[3 * i + d]); v(i, d) = T(st.v[3 * i + d]); w(i, d) = T(st.w[3 * i + d]); }

@@ -1,8 +1,9 @@
-// JKR detachment from the contact's state alone (issue 10 item 1): from deep adhesive contact, one
-// step beyond the displacement-controlled critical overlap delta_c = -(3/4) (pi^2 Gamma^2 R* /
-// E*^2)^(1/3) (jkr_contact_radius.hpp; dd/dx = 0 of (B3)) gives exactly zero force and a reset
-// history, and a re-approach is a new contact (it forms at delta >= 0); one step to just inside
-// delta_c still pulls with about -5/9 f_ce (the force approaches it like the square root of the distance to delta_c).
+// JKR detachment from the contact's state alone, whatever the host's neighbour list keeps: from
+// deep adhesive contact, one step beyond the displacement-controlled critical overlap delta_c =
+// -(3/4) (pi^2 Gamma^2 R* / E*^2)^(1/3) (jkr/detail/jkr_contact_radius.hpp; dd/dx = 0 of (B3))
+// gives exactly zero force and a reset history, and a re-approach is a new contact (it forms at
+// delta >= 0); one step to just inside delta_c still pulls with about -5/9 f_ce (the force
+// approaches it like the square root of the distance to delta_c).
 #include <backends.hpp>
 #include <catch2/catch.hpp>
 #include <epac/models/jkr/jkr.hpp>

@@ -11,6 +11,14 @@
 namespace epac {
 namespace test {
 
+// For ContactStepper::evaluate: the model's critical overlap of the stored contact (adhesive laws).
+struct CriticalOverlap {
+  template <class M, class G, class Row>
+  KOKKOS_INLINE_FUNCTION typename M::scalar_type operator()(const M& m, const G& g, const Row& row) const {
+    return m.critical_overlap(g, row);
+  }
+};
+
 // Growth = true (MDR with radius growth): the particles are bound to the model and their radii
 // updated after every force pass.
 template <class Model, bool Growth = false>
@@ -82,7 +90,9 @@ class ContactStepper {
     return v;
   }
 
-  // f(model, geometry, row) evaluated on the device at the current positions, as a double.
+  // f(model, geometry, row) evaluated on the device at the current positions, as a double. f is a
+  // functor at namespace scope with a KOKKOS_INLINE_FUNCTION operator() (e.g. CriticalOverlap): a
+  // test's lambda is host code, which nvcc does not let a device kernel call.
   template <class F>
   double evaluate(F f) const {
     Kokkos::View<double*, D> r("r", 1);

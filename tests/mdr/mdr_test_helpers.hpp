@@ -13,6 +13,20 @@
 namespace epac {
 namespace test {
 
+// For ContactStepper::evaluate on an MDR contact: one field of the stored contact's outputs
+// (m.outputs), as a functor the device can call (a test's lambda is host code).
+struct MdrOutputField {
+  enum Field { side_force, side_overlap, yielded };
+  Field field;
+  int side;  // 0 or 1 (ignored for yielded)
+  template <class M, class G, class Row>
+  KOKKOS_INLINE_FUNCTION typename M::scalar_type operator()(const M& m, const G& g, const Row& row) const {
+    using T = typename M::scalar_type;
+    const auto o = m.outputs(g, row);
+    return field == side_force ? o.side_force[side] : field == side_overlap ? o.side_overlap[side] : T(o.yielded);
+  }
+};
+
 // A deformable material with E, nu, Y (Y = inf: elastic), surface energy gamma.
 inline Material mdr_material(double E, double nu, double Y, double gamma = 0.0, double restitution = 1.0) {
   Material m;

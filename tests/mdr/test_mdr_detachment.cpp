@@ -1,4 +1,4 @@
-// MDR adhesive detachment from the contact's state alone (issue 10 item 1): a pair or wall contact
+// MDR adhesive detachment from the contact's state alone (detachment at the critical overlap, docs/stability.md): a pair or wall contact
 // loaded plastically into adhesive contact and then moved in one step past its critical overlap
 // (mdr_detachment.hpp) gives exactly zero force and a reset history, and a re-approach is a new
 // contact; one step to just inside the critical overlap still pulls.
@@ -16,10 +16,7 @@ using namespace epac::test;
 namespace {
 template <class M, bool G>
 double critical_overlap_of(const ContactStepper<M, G>& s) {
-  return s.evaluate([](const M& m, const ContactGeometry<typename M::scalar_type>& g,
-                       const HistoryRow<typename M::scalar_type, typename M::device_type>& row) {
-    return m.critical_overlap(g, row);
-  });
+  return s.evaluate(CriticalOverlap{});
 }
 
 bool all_zero(const std::vector<double>& v) {
@@ -161,7 +158,7 @@ void detachment_fuzz(int n) {
     append_ramp(path, dm, dm * (1 - 2 * U(rng)), 1 + int(40 * U(rng)));
     bool finite = true;
     for (double d : path) finite = finite && std::isfinite(s.step(d));
-    if (!finite || !s.radii_finite()) continue;  // the path itself (issue 10 item 0), not detachment
+    if (!finite || !s.radii_finite()) continue;  // the path itself (MDR finite for every accepted input), not detachment
     ++cases;
     INFO("case " << k << (pair ? " pair" : " wall") << " E " << Ea << " " << Eb << " R " << R0 << " " << R1);
     // the critical overlap lies within the driver's adhesive range (drivers/driver/models/mdr.cpp:

@@ -1,4 +1,4 @@
-// MDR pairs stay finite and conservative where the old pair split did not (issue 10 item 0):
+// MDR pairs stay finite and conservative where the old pair split did not (MDR finite for every accepted input, docs/stability.md):
 // the split's interpolation stays in [0, 1] and never throws a side beyond its residual or above
 // its height at dmax; the two reproductions of the issue; closed elastic cycles of unequal pairs
 // return at most the work put in; the all_contacts growth rule does not ratchet elastic contacts.
@@ -88,7 +88,7 @@ TEMPLATE_TEST_CASE("MDR pair split: continuous, sums to delta, bounded by residu
   CHECK(beyond_dmax_residuals > 300);
 }
 
-TEMPLATE_LIST_TEST_CASE("MDR pair with growth, issue 10 case 1: one step to 0.8 R_small, then unload (radii 0.1, 1 mm)",
+TEMPLATE_LIST_TEST_CASE("MDR pair with growth, reported NaN reproduction 1: one step to 0.8 R_small, then unload (radii 0.1, 1 mm)",
                         "[mdr][pair][growth][stability]", BackendsAndScalars) {
   // Old split: NaN at unloading step 68 (double) / 20 (float): the residuals summed to more than
   // dmax and the floored denominator threw a side 1e7 R deep.
@@ -113,7 +113,7 @@ TEMPLATE_LIST_TEST_CASE("MDR pair with growth, issue 10 case 1: one step to 0.8 
   }
 }
 
-TEMPLATE_LIST_TEST_CASE("MDR pair with growth, issue 10 case 2: smooth path, soft elastic partner",
+TEMPLATE_LIST_TEST_CASE("MDR pair with growth, reported NaN reproduction 2: smooth path, soft elastic partner",
                         "[mdr][pair][growth][stability]", BackendsAndScalars) {
   // E 1e7 Pa, E/Y 42000, Delta gamma 144 J/m^2 against an elastic sphere of E 1.4e5 Pa; radii 2.6
   // and 11 mm; 200 steps to 0.4 R, unload by 0.002 R per step (old split: NaN at step 325 while
@@ -242,10 +242,7 @@ TEMPLATE_LIST_TEST_CASE("MDR pair: the flat balances the sides' scaled forces; y
     for (double d : path) {
       F.push_back(s.step(d));
       auto side = [&](int k, int what) {
-        return s.evaluate([k, what](const M& m, const ContactGeometry<T>& g, const HistoryRow<T, D>& row) {
-          const MdrContactOutput<T> o = m.outputs(g, row);
-          return what == 0 ? o.side_force[k] : what == 1 ? o.side_overlap[k] : T(o.yielded);
-        });
+        return s.evaluate(MdrOutputField{MdrOutputField::Field(what), k});  // 0 force, 1 overlap, 2 yielded
       };
       const double F0 = side(0, 0), F1 = side(1, 0);
       const double sc = lam0 * std::fabs(F0) + lam1 * std::fabs(F1);
@@ -286,10 +283,8 @@ TEMPLATE_LIST_TEST_CASE("MDR pair_split geometric: the authors' radical plane wh
       const double Fg = g.step(d), Fb = b.step(d);
       // outputs of the stored state: 0 side 0's overlap, 1 and 2 the sides' forces
       auto out = [](ContactStepper<M>& s, int what) {
-        return s.evaluate([what](const M& m, const ContactGeometry<T>& geom, const HistoryRow<T, D>& row) {
-          const MdrContactOutput<T> o = m.outputs(geom, row);
-          return what == 0 ? o.side_overlap[0] : o.side_force[what - 1];
-        });
+        return s.evaluate(what == 0 ? MdrOutputField{MdrOutputField::side_overlap, 0}
+                                    : MdrOutputField{MdrOutputField::side_force, what - 1});
       };
       // the side of particle 0 sits at the radical plane's cap height (mdr_side0_height)
       const double h0 = double(mdr_side0_height(T(g.overlap()), T(R0), T(R1)));
@@ -299,7 +294,7 @@ TEMPLATE_LIST_TEST_CASE("MDR pair_split geometric: the authors' radical plane wh
       worst_split_gap = std::max(worst_split_gap, std::fabs(dg0 - db0) / d);
       if (R1 == R0) CHECK(Fg == Approx(Fb).epsilon(tol * 10));  // equal spheres: both splits are delta/2
     }
-    // unequal yielded spheres: the balance moves the flat off the radical plane (issue 10)
+    // unequal yielded spheres: the balance moves the flat off the radical plane (the balanced pair split)
     if (R1 != R0) CHECK(worst_split_gap > 1e-3);
     else CHECK(worst_split_gap < tol);
   }

@@ -1,7 +1,8 @@
-// Nan 2022 detachment from the contact's state alone (issue 10 item 1): a contact loaded past yield
-// and then moved in one step beyond its detachment overlap alpha_jp (Nan (14), on the unloading line
-// of its alpha_max) gives exactly zero force and a reset history (the pair has separated, Nan Sec.
-// 2.1), and a re-approach is a first contact; one step to just inside alpha_jp still pulls.
+// Nan 2022 detachment from the contact's state alone, whatever the host's list keeps: a contact
+// loaded past yield and then moved in one step beyond its detachment overlap alpha_jp (Nan (14), on
+// the unloading line of its alpha_max) gives exactly zero force and a reset history (the pair has
+// separated, Nan Sec. 2.1), and a re-approach is a first contact; one step to just inside alpha_jp
+// still pulls.
 #include <backends.hpp>
 #include <catch2/catch.hpp>
 #include <epac/models/nan2022/nan2022.hpp>

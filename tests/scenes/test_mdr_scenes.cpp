@@ -1,4 +1,4 @@
-// The MDR validation scenes of drivers/scenes/ (issue 3 item 7) run through the driver, and what
+// The MDR validation scenes of drivers/scenes/ (docs/driver.md) run through the driver, and what
 // their CSV outputs must show:
 //  - two flats, E/Y = 6.25 ... 200: peak force at delta_o/R_o = 0.5 and residual displacement as
 //    the side law gives them (numbers of the MDR kernel's own integration, growth on), both flats

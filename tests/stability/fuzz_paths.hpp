@@ -1,5 +1,5 @@
 #pragma once
-// Random contact paths for every law (issue 10 item 0): mixed materials and size ratios to 100,
+// Random contact paths for every law (docs/stability.md): mixed materials and size ratios to 100,
 // driven through the contact kernels in batches (one model per group of paths, one kernel launch
 // per step for the whole group). Two kinds of path, alternating:
 //   - finite paths: random overlaps from a gap to 1.2 R (jumps and small increments), random

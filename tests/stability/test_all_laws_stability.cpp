@@ -1,4 +1,5 @@
-// Promise 2, across every law: hard cases stay finite and create no energy.
+// Numerical stability across every law (docs/stability.md): hard cases stay finite and create no
+// energy.
 //   - a sweep of radii (1e-7 .. 1e-1 m), stiffness (E = 1e6 .. 1e12 Pa, E/Y up to 1e4), overlaps
 //     from 1e-9 R to 0.9 R and small negative gaps, with and without adhesion, in double and
 //     float, wall and pair contacts, with large random velocities: every force finite;

@@ -1,5 +1,5 @@
 // `create` of every law rejects, for float models, moduli, surface energies and yield stresses whose
-// derived constants overflow or underflow in float (issue 10 item 0), naming the constant, its
+// derived constants overflow or underflow in float (docs/stability.md), naming the constant, its
 // value and the representable range; the same materials are accepted by the double models.
 #include "stability_helpers.hpp"
 

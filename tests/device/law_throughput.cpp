@@ -1,0 +1,138 @@
+// Contacts per second of one force pass for each contact law (the laws and effects of
+// bench/bench_model_cost.cpp: all effects on, friction and damping everywhere), double and float,
+// on the dense packing of the benchmarks at the sizes asked for (default 1e5, 1e6 and 1e7
+// contacts), on Kokkos' default execution space: the GPU in a CUDA build. cmake/device-run.sh
+// runs it; on the host it runs too (small sizes). One force pass = zero forces, the force kernel
+// with the backend's default particle sums (atomics on a GPU), the radius update for MDR growth.
+//   epac-law-throughput [--contacts 1e5,1e6,1e7] [--seconds 0.5] [--json FILE]
+// The JSON is a list of {law, scalar, contacts, particles, passes, seconds, contacts_per_s}.
+#include <Kokkos_Core.hpp>
+#include <epac/compute/contact_forces.hpp>
+#include <epac/models/hertz_mindlin.hpp>
+#include <epac/models/jkr/jkr.hpp>
+#include <epac/models/mdr/mdr_model.hpp>
+#include <epac/models/nan2022/nan2022.hpp>
+#include <support/dense_packing.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+using namespace epac;
+
+namespace {
+// The cohesive polymer powder of bench/bench_model_cost.cpp (Nan Table 2's Ning particle, R = 1 mm).
+Material powder() {
+  Material m;
+  m.name = "powder"; m.youngs_modulus = 1.2e9; m.poisson_ratio = 0.3; m.density = 1000;
+  m.restitution = 0.81; m.friction = 0.3; m.surface_energy = 0.2; m.yield_stress = 35.3e6;
+  return m;
+}
+
+struct Row {
+  std::string law, scalar;
+  long contacts, particles;
+  int passes;
+  double seconds, contacts_per_s;
+};
+
+// The packing's side for about `contacts` contacts: n^3 particles, 3 n^2 (n - 1) contacts.
+int side_for(double contacts) {
+  int n = 2;
+  while (3.0 * n * n * (n - 1) < contacts) ++n;
+  return n;
+}
+
+template <class Model>
+Row measure(const char* law, Model model, double contacts, double min_seconds) {
+  using T = typename Model::scalar_type;
+  using D = typename Model::device_type;
+  auto pk = bench::make_dense_packing<T, D>(side_for(contacts));
+  ContactHistory<T, D> h(pk.contacts.count, Model::history_size);
+  constexpr bool grows = Model::effects::radius_growth;
+  if constexpr (grows) model.bind(pk.particles);
+  ForceSums<T, D> sums(pk.particles);
+  auto pass = [&] {
+    zero_forces(pk.particles);
+    sums.begin();
+    compute_pair_forces(model, pk.particles, pk.contacts, h, T(1e-9), sums);
+    sums.end();
+    if constexpr (grows) model.update_radii();
+  };
+  for (int k = 0; k < 2; ++k) pass();  // first touch, history set up
+  Kokkos::fence();
+  Kokkos::Timer timer;
+  int passes = 0;
+  do {
+    pass();
+    Kokkos::fence();
+    ++passes;
+  } while (timer.seconds() < min_seconds || passes < 3);
+  const double s = timer.seconds();
+  return {law, sizeof(T) == 8 ? "double" : "float", long(pk.contacts.count), long(pk.particles.n), passes, s,
+          double(pk.contacts.count) * passes / s};
+}
+
+constexpr unsigned FD = kFriction | kDamping;
+constexpr unsigned ALL = FD | kAdhesion | kPlasticity | kRadiusGrowth;
+
+template <class T>
+void all_laws(std::vector<Row>& rows, double c, double sec) {
+  rows.push_back(measure("hertz_mindlin", HertzMindlin<T, Effects<FD>>::create({powder()}), c, sec));
+  rows.push_back(measure("jkr", Jkr<T, Effects<FD | kAdhesion>>::create({powder()}), c, sec));
+  rows.push_back(measure("nan2022", Nan2022<T, Effects<FD | kAdhesion | kPlasticity>>::create({powder()}), c, sec));
+  rows.push_back(measure("mdr", Mdr<T, Effects<ALL>>::create({powder()}), c, sec));
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+  Kokkos::ScopeGuard guard(argc, argv);
+  std::vector<double> sizes{1e5, 1e6, 1e7};
+  double seconds = 0.5;
+  std::string json;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--contacts" && i + 1 < argc) {
+      sizes.clear();
+      std::string list = argv[++i];
+      for (size_t p = 0; p < list.size();) {
+        const size_t q = list.find(',', p);
+        sizes.push_back(std::atof(list.substr(p, q - p).c_str()));
+        p = q == std::string::npos ? list.size() : q + 1;
+      }
+    } else if (a == "--seconds" && i + 1 < argc) {
+      seconds = std::atof(argv[++i]);
+    } else if (a == "--json" && i + 1 < argc) {
+      json = argv[++i];
+    } else {
+      std::fprintf(stderr, "usage: %s [--contacts 1e5,1e6,1e7] [--seconds 0.5] [--json FILE]\n", argv[0]);
+      return 2;
+    }
+  }
+  std::vector<Row> rows;
+  for (double c : sizes) {
+    all_laws<double>(rows, c, seconds);
+    all_laws<float>(rows, c, seconds);
+  }
+  std::printf("| law | scalar | contacts | contacts/s |\n|---|---|---|---|\n");
+  for (const Row& r : rows)
+    std::printf("| %s | %s | %ld | %.3g |\n", r.law.c_str(), r.scalar.c_str(), r.contacts, r.contacts_per_s);
+  if (!json.empty()) {
+    FILE* f = std::fopen(json.c_str(), "w");
+    if (!f) { std::perror(json.c_str()); return 1; }
+    std::fprintf(f, "{\"backend\": \"%s\", \"results\": [\n", Kokkos::DefaultExecutionSpace::name());
+    for (size_t k = 0; k < rows.size(); ++k) {
+      const Row& r = rows[k];
+      std::fprintf(f,
+                   "  {\"law\": \"%s\", \"scalar\": \"%s\", \"contacts\": %ld, \"particles\": %ld, \"passes\": %d, "
+                   "\"seconds\": %.6g, \"contacts_per_s\": %.6g}%s\n",
+                   r.law.c_str(), r.scalar.c_str(), r.contacts, r.particles, r.passes, r.seconds, r.contacts_per_s,
+                   k + 1 < rows.size() ? "," : "");
+    }
+    std::fprintf(f, "]}\n");
+    std::fclose(f);
+  }
+  return 0;
+}
