@@ -32,11 +32,23 @@ constexpr double kR = 2.45e-6, kOffset = 1000 * kR, kV0 = 5.0, kE = 1.2e9, kNu =
 
 Material particle() {
   Material m;
-  m.name = "ning"; m.youngs_modulus = kE; m.poisson_ratio = kNu; m.density = kRho;
-  m.restitution = 0.81; m.friction = 0.3; m.surface_energy = 0.2; m.yield_stress = 35.3e6;
+  m.name = "ning";
+  m.youngs_modulus = kE;
+  m.poisson_ratio = kNu;
+  m.density = kRho;
+  m.restitution = 0.81;
+  m.friction = 0.3;
+  m.surface_energy = 0.2;
+  m.yield_stress = 35.3e6;
   return m;
 }
-Material wall() { Material m; m.name = "wall"; m.rigid = true; m.poisson_ratio = 0.3; return m; }
+Material wall() {
+  Material m;
+  m.name = "wall";
+  m.rigid = true;
+  m.poisson_ratio = 0.3;
+  return m;
+}
 
 template <class Model>
 double ns_per_contact(const Model& model) {
@@ -85,10 +97,20 @@ void evaluate(const std::string& name, std::vector<Row>& rows) {  // host
 }
 
 constexpr unsigned FD = kFriction | kDamping;
-template <class T> struct MakeHertzMindlin { static auto make() { return HertzMindlin<T, Effects<FD>>::create({particle(), wall()}); } };
-template <class T> struct MakeJkr { static auto make() { return Jkr<T, Effects<FD | kAdhesion>>::create({particle(), wall()}); } };
-template <class T> struct MakeNan { static auto make() { return Nan2022<T, Effects<FD | kAdhesion | kPlasticity>>::create({particle(), wall()}); } };
-template <class T> struct MakeMdr {  // radius growth off: a single impact does not grow R measurably
+template <class T>
+struct MakeHertzMindlin {
+  static auto make() { return HertzMindlin<T, Effects<FD>>::create({particle(), wall()}); }
+};
+template <class T>
+struct MakeJkr {
+  static auto make() { return Jkr<T, Effects<FD | kAdhesion>>::create({particle(), wall()}); }
+};
+template <class T>
+struct MakeNan {
+  static auto make() { return Nan2022<T, Effects<FD | kAdhesion | kPlasticity>>::create({particle(), wall()}); }
+};
+template <class T>
+struct MakeMdr {  // radius growth off: a single impact does not grow R measurably
   static auto make() { return Mdr<T, Effects<FD | kAdhesion | kPlasticity>>::create({particle(), wall()}); }
 };
 }  // namespace
@@ -105,21 +127,28 @@ int main(int argc, char* argv[]) {
   evaluate<MakeMdr>("mdr", rows);
   std::printf("backend %s, %d threads; impact at %.1f m/s; errors against the same law in double at t_c/2000\n\n",
               Kokkos::DefaultExecutionSpace::name(), Kokkos::DefaultExecutionSpace().concurrency(), kV0);
-  std::printf("| model | precision | dt = t_c/N | restitution | abs. error e | rel. error F_max | ns per contact per pass | ns per contact per t_c simulated |\n");
+  std::printf(
+      "| model | precision | dt = t_c/N | restitution | abs. error e | rel. error F_max | ns per contact per pass | ns "
+      "per contact per t_c simulated |\n");
   std::printf("|---|---|---|---|---|---|---|---|\n");
   for (const auto& r : rows)
     std::printf("| %s | %s | %d | %.4f | %.2e | %.2e | %.1f | %.0f |%s\n", r.model.c_str(), r.precision.c_str(),
                 r.n_per_tc, r.e, r.e_err, r.f_err, r.ns, r.ns_per_tc, r.finite ? "" : " NON-FINITE");
   if (!csv.empty()) {
     FILE* f = std::fopen(csv.c_str(), "w");
-    if (!f) { std::fprintf(stderr, "cannot write %s\n", csv.c_str()); return 1; }
-    std::fprintf(f, "model,precision,n_per_tc,dt [s],restitution [-],abs_error_restitution [-],rel_error_peak_force [-],"
-                    "ns_per_contact [ns],ns_per_contact_per_tc [ns]\n");
+    if (!f) {
+      std::fprintf(stderr, "cannot write %s\n", csv.c_str());
+      return 1;
+    }
+    std::fprintf(f,
+                 "model,precision,n_per_tc,dt [s],restitution [-],abs_error_restitution [-],rel_error_peak_force [-],"
+                 "ns_per_contact [ns],ns_per_contact_per_tc [ns]\n");
     for (const auto& r : rows)
-      std::fprintf(f, "%s,%s,%d,%.6e,%.6f,%.6e,%.6e,%.3f,%.3f\n", r.model.c_str(), r.precision.c_str(), r.n_per_tc, r.dt,
-                   r.e, r.e_err, r.f_err, r.ns, r.ns_per_tc);
+      std::fprintf(f, "%s,%s,%d,%.6e,%.6f,%.6e,%.6e,%.3f,%.3f\n", r.model.c_str(), r.precision.c_str(), r.n_per_tc,
+                   r.dt, r.e, r.e_err, r.f_err, r.ns, r.ns_per_tc);
     std::fclose(f);
   }
-  for (const auto& r : rows) if (!r.finite) return 1;
+  for (const auto& r : rows)
+    if (!r.finite) return 1;
   return 0;
 }

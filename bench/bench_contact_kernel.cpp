@@ -13,8 +13,12 @@ using namespace epac;
 namespace {
 Material glass() {
   Material m;
-  m.name = "glass"; m.youngs_modulus = 70e9; m.poisson_ratio = 0.25; m.density = 2500;
-  m.restitution = 0.5; m.friction = 0.5;
+  m.name = "glass";
+  m.youngs_modulus = 70e9;
+  m.poisson_ratio = 0.25;
+  m.density = 2500;
+  m.restitution = 0.5;
+  m.friction = 0.5;
   return m;
 }
 

@@ -20,11 +20,21 @@ using namespace epac;
 namespace {
 Material powder() {  // as bench_model_cost.cpp
   Material m;
-  m.name = "powder"; m.youngs_modulus = 1.2e9; m.poisson_ratio = 0.3; m.density = 1000;
-  m.restitution = 0.81; m.friction = 0.3; m.surface_energy = 0.2; m.yield_stress = 35.3e6;
+  m.name = "powder";
+  m.youngs_modulus = 1.2e9;
+  m.poisson_ratio = 0.3;
+  m.density = 1000;
+  m.restitution = 0.81;
+  m.friction = 0.3;
+  m.surface_energy = 0.2;
+  m.yield_stress = 35.3e6;
   return m;
 }
-Material powder_no_adhesion() { Material m = powder(); m.surface_energy = 0; return m; }
+Material powder_no_adhesion() {
+  Material m = powder();
+  m.surface_energy = 0;
+  return m;
+}
 
 constexpr unsigned FD = kFriction | kDamping;
 constexpr unsigned ALL = FD | kAdhesion | kPlasticity | kRadiusGrowth;

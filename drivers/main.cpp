@@ -50,13 +50,14 @@ int bounded_threads(int requested) {
   }
   const int avail = available_threads();
   if (requested <= avail) return requested;
-  std::fprintf(stderr, "epac-run: warning: %s = %d is more than the %d CPUs this process can use (valid range "
-               "[1, %d]); running with %d threads\n", source, requested, avail, avail, avail);
+  std::fprintf(stderr,
+               "epac-run: warning: %s = %d is more than the %d CPUs this process can use (valid range "
+               "[1, %d]); running with %d threads\n",
+               source, requested, avail, avail, avail);
   return avail;
 }
 
 }  // namespace
-
 
 int main(int argc, char** argv) {
   CLI::App app{"epac-run: run a DEM scene with the epac contact kernels"};
@@ -64,15 +65,15 @@ int main(int argc, char** argv) {
   epac::driver::RunOptions opt;
   int threads = 0;
   app.add_option("scene", scene_path, "scene file (TOML; see drivers/README.md)")->required()->check(CLI::ExistingFile);
-  app.add_option("--out", opt.out_dir,
-                 "output folder (default ./epac-out); refused if it holds another run's outputs");
+  app.add_option("--out", opt.out_dir, "output folder (default ./epac-out); refused if it holds another run's outputs");
   app.add_flag("--overwrite", opt.overwrite,
                "remove the epac-run outputs of an earlier run in --out first (other files stay)");
   app.add_option("--threads", threads,
                  "threads (default: OMP_NUM_THREADS / Kokkos default); above the CPUs available: "
                  "clamped with a warning")
       ->check(CLI::Range(1, INT_MAX));
-  app.add_option("--steps", opt.steps, "number of steps (overrides [run] steps)")->check(CLI::Range(int64_t(0), int64_t(1000000000000LL)));
+  app.add_option("--steps", opt.steps, "number of steps (overrides [run] steps)")
+      ->check(CLI::Range(int64_t(0), int64_t(1000000000000LL)));
   app.add_option("--precision", opt.precision, "scalar type: double (default) or float")
       ->check(CLI::IsMember({"double", "float"}));
   app.add_flag("--quiet", opt.quiet, "no informational output and no progress line");

@@ -40,9 +40,8 @@ double triad_gbs(std::size_t n, int repeats) {
     Kokkos::fence();
     const auto t0 = std::chrono::steady_clock::now();
     for (int k = 0; k < sweeps; ++k)
-      Kokkos::parallel_for("epac::triad", Kokkos::RangePolicy<exec>(0, n), KOKKOS_LAMBDA(std::size_t i) {
-        a(i) = b(i) + s * c(i);
-      });
+      Kokkos::parallel_for(
+          "epac::triad", Kokkos::RangePolicy<exec>(0, n), KOKKOS_LAMBDA(std::size_t i) { a(i) = b(i) + s * c(i); });
     Kokkos::fence();
     const double dt = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() / sweeps;
     best = std::min(best, dt);
@@ -52,8 +51,8 @@ double triad_gbs(std::size_t n, int repeats) {
 
 struct KernelBytes {
   const char* name;
-  int history_fields;   // per contact
-  int particle_loads;   // scalars loaded per particle (x 3, v 3, omega 3, radius, mass, [gid], ...)
+  int history_fields;     // per contact
+  int particle_loads;     // scalars loaded per particle (x 3, v 3, omega 3, radius, mass, [gid], ...)
   int sums_per_particle;  // scalars accumulated per particle (force 3 + torque 3 [+ MDR 3])
 };
 
@@ -86,12 +85,15 @@ int main(int argc, char** argv) {
   std::string json_path;
   int repeats = 5;
   for (int a = 1; a < argc; ++a) {
-    if (!std::strcmp(argv[a], "--json") && a + 1 < argc) json_path = argv[++a];
-    else if (!std::strcmp(argv[a], "--repeats") && a + 1 < argc) repeats = std::atoi(argv[++a]);
+    if (!std::strcmp(argv[a], "--json") && a + 1 < argc)
+      json_path = argv[++a];
+    else if (!std::strcmp(argv[a], "--repeats") && a + 1 < argc)
+      repeats = std::atoi(argv[++a]);
   }
   Kokkos::ScopeGuard guard(argc, argv);
   const int threads = Kokkos::DefaultExecutionSpace().concurrency();
-  const std::size_t sizes[] = {std::size_t(32) << 10, std::size_t(256) << 10, std::size_t(2) << 20, std::size_t(64) << 20};
+  const std::size_t sizes[] = {std::size_t(32) << 10, std::size_t(256) << 10, std::size_t(2) << 20,
+                               std::size_t(64) << 20};
   const char* labels[] = {"32KiB", "256KiB", "2MiB", "64MiB"};
   std::string out = "{\n  \"backend\": \"" + std::string(Kokkos::DefaultExecutionSpace::name()) +
                     "\",\n  \"threads\": " + std::to_string(threads) + ",\n  \"triad_GBps\": {";
@@ -114,7 +116,10 @@ int main(int argc, char** argv) {
   out += "}\n}\n";
   if (!json_path.empty()) {
     FILE* f = std::fopen(json_path.c_str(), "w");
-    if (f) { std::fputs(out.c_str(), f); std::fclose(f); }
+    if (f) {
+      std::fputs(out.c_str(), f);
+      std::fclose(f);
+    }
   }
   return 0;
 }

@@ -47,7 +47,10 @@ DensePacking<T, Device> make_dense_packing(int n_side, double R = 1e-3, unsigned
         x(i, 0) = T(a * s + 0.02 * R * u(rng));
         x(i, 1) = T(b * s + 0.02 * R * u(rng));
         x(i, 2) = T(c * s + 0.02 * R * u(rng));
-        for (int d = 0; d < 3; ++d) { v(i, d) = T(0.01 * u(rng)); w(i, d) = T(1.0 * u(rng)); }
+        for (int d = 0; d < 3; ++d) {
+          v(i, d) = T(0.01 * u(rng));
+          w(i, d) = T(1.0 * u(rng));
+        }
         r0(i) = r(i) = T(Ri);
         m(i) = T(2500.0 * 4.0 / 3.0 * M_PI * Ri * Ri * Ri);
         I(i) = T(0.4 * m(i) * Ri * Ri);
@@ -58,9 +61,18 @@ DensePacking<T, Device> make_dense_packing(int n_side, double R = 1e-3, unsigned
   for (int a = 0; a < n_side; ++a)
     for (int b = 0; b < n_side; ++b)
       for (int c = 0; c < n_side; ++c) {
-        if (a + 1 < n_side) { fi.push_back(idx(a, b, c)); fj.push_back(idx(a + 1, b, c)); }
-        if (b + 1 < n_side) { fi.push_back(idx(a, b, c)); fj.push_back(idx(a, b + 1, c)); }
-        if (c + 1 < n_side) { fi.push_back(idx(a, b, c)); fj.push_back(idx(a, b, c + 1)); }
+        if (a + 1 < n_side) {
+          fi.push_back(idx(a, b, c));
+          fj.push_back(idx(a + 1, b, c));
+        }
+        if (b + 1 < n_side) {
+          fi.push_back(idx(a, b, c));
+          fj.push_back(idx(a, b + 1, c));
+        }
+        if (c + 1 < n_side) {
+          fi.push_back(idx(a, b, c));
+          fj.push_back(idx(a, b, c + 1));
+        }
       }
   // Shuffle the list so memory access is not artificially regular.
   std::vector<int> order(fi.size());  // host
@@ -69,13 +81,21 @@ DensePacking<T, Device> make_dense_packing(int n_side, double R = 1e-3, unsigned
   ContactList<Device> cl(static_cast<int>(fi.size()), "packing.contacts");
   auto hf = Kokkos::create_mirror_view(cl.first);
   auto hs = Kokkos::create_mirror_view(cl.second);
-  for (std::size_t k = 0; k < order.size(); ++k) { hf(k) = fi[order[k]]; hs(k) = fj[order[k]]; }
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    hf(k) = fi[order[k]];
+    hs(k) = fj[order[k]];
+  }
   Kokkos::deep_copy(cl.first, hf);
   Kokkos::deep_copy(cl.second, hs);
-  Kokkos::deep_copy(p.x, x); Kokkos::deep_copy(p.v, v); Kokkos::deep_copy(p.omega, w);
-  Kokkos::deep_copy(p.mass, m); Kokkos::deep_copy(p.inertia, I);
-  Kokkos::deep_copy(p.radius0, r0); Kokkos::deep_copy(p.radius, r);
-  Kokkos::deep_copy(p.material, mat); Kokkos::deep_copy(p.gid, gid);
+  Kokkos::deep_copy(p.x, x);
+  Kokkos::deep_copy(p.v, v);
+  Kokkos::deep_copy(p.omega, w);
+  Kokkos::deep_copy(p.mass, m);
+  Kokkos::deep_copy(p.inertia, I);
+  Kokkos::deep_copy(p.radius0, r0);
+  Kokkos::deep_copy(p.radius, r);
+  Kokkos::deep_copy(p.material, mat);
+  Kokkos::deep_copy(p.gid, gid);
   return {p, cl};
 }
 

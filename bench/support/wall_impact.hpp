@@ -13,7 +13,7 @@ struct ImpactResult {
   double restitution = 0;  // rebound speed / impact speed; 0 if the sphere stuck
   double peak_force = 0;   // largest compressive wall force [N]
   long steps = 0;
-  bool finite = true;      // no NaN or Inf seen
+  bool finite = true;  // no NaN or Inf seen
 };
 
 // `model` has materials {particle = 0, wall = 1}. Starts with a gap of 1e-3 R. The wall sits at
@@ -74,10 +74,16 @@ ImpactResult wall_impact(const Model& model, double R, double m, double v0, doub
     fz = force();
     vz += 0.5 * dt * fz / m;
     r.steps = s + 1;
-    if (!std::isfinite(fz) || !std::isfinite(vz)) { r.finite = false; return r; }
+    if (!std::isfinite(fz) || !std::isfinite(vz)) {
+      r.finite = false;
+      return r;
+    }
     if (fz != 0) touched = true;
     r.peak_force = std::max(r.peak_force, fz);
-    if (touched && fz == 0 && vz > 0 && z > R) { r.restitution = vz / v0; return r; }
+    if (touched && fz == 0 && vz > 0 && z > R) {
+      r.restitution = vz / v0;
+      return r;
+    }
   }
   return r;  // stuck within t_max
 }

@@ -28,12 +28,11 @@ std::string format_report(const CalibrationResult& r) {
   const auto& q = r.request;
   std::ostringstream o;
   o << "Nan et al. 2022 calibration (Nan Sec. 3.3)\n";
-  o << "  E* = " << fmt("%.6g", q.E_star) << " Pa, R* = " << fmt("%.6g", q.R_star) << " m, Gamma = "
-    << fmt("%.6g", q.surface_energy) << " J/m^2, p_y = " << fmt("%.6g", q.yield_pressure) << " Pa\n";
+  o << "  E* = " << fmt("%.6g", q.E_star) << " Pa, R* = " << fmt("%.6g", q.R_star)
+    << " m, Gamma = " << fmt("%.6g", q.surface_energy) << " J/m^2, p_y = " << fmt("%.6g", q.yield_pressure) << " Pa\n";
   o << "  unloading law " << q.unloading_law << (q.unloading_law == "plastic_offset" ? " (Nan (49))" : " (Nan (45))")
-    << ", k_e by " << (q.unloading_fit == "secant" ? "Nan (50) secant" : "least-squares unloading line")
-    << ", k_p by " << (q.plastic_fit == "secants" ? "Nan (51) mean secant" : "least-squares line through the peaks")
-    << "\n\n";
+    << ", k_e by " << (q.unloading_fit == "secant" ? "Nan (50) secant" : "least-squares unloading line") << ", k_p by "
+    << (q.plastic_fit == "secants" ? "Nan (51) mean secant" : "least-squares line through the peaks") << "\n\n";
   o << "Unloading curves (Table 2), largest alpha_max first:\n";
   o << "  #  f_max [uN]  alpha_max [nm]  alpha_p [nm]  f_cp [uN]   k_e [N/m]   samples  source\n";
   for (std::size_t i = 0; i < c.curves.size(); ++i) {
@@ -46,8 +45,8 @@ std::string format_report(const CalibrationResult& r) {
   o << "  k_p        = " << fmt("%.5g", c.k_p) << " N/m   (Nan (51))\n";
   o << "  k_e0       = " << fmt("%.5g", c.k_e0) << " N/m at alpha_max0 = " << fmt("%.5g", c.alpha_max0 * 1e9)
     << " nm (reference unloading line)\n";
-  o << "  k_el       = " << fmt("%.5g", c.k_el) << " N/m   (Nan (29) with " << (q.unloading_law == "plastic_offset" ? "(49)" : "(45)")
-    << ", " << c.iterations << " iterations)\n";
+  o << "  k_el       = " << fmt("%.5g", c.k_el) << " N/m   (Nan (29) with "
+    << (q.unloading_law == "plastic_offset" ? "(49)" : "(45)") << ", " << c.iterations << " iterations)\n";
   o << "  alpha_y    = " << fmt("%.5g", c.alpha_y * 1e9) << " nm\n";
   o << "  alpha_0    = " << fmt("%.5g", c.alpha_0 * 1e9) << " nm\n";
   o << "  k_el/k_cl  = " << fmt("%.4g", c.el_over_cl) << "       (Nan (35)-(37))\n";
@@ -57,12 +56,9 @@ std::string format_report(const CalibrationResult& r) {
 std::vector<std::pair<std::string, nlohmann::json>> scene_model_keys(const CalibrationResult& r) {
   // Keys of drivers/driver/models/nan2022.cpp (named after Nan2022Options): k_el fixed for every
   // contact, k_p fixed (k_p > k_el is allowed, as for Du), the unloading law of the calibration.
-  return {{"name", "nan2022"},
-          {"yield_pressure_from", "given_pressure"},
-          {"k_el_from", "fixed"},
-          {"k_el", r.result.k_el},
-          {"k_p", r.result.k_p},
-          {"unloading_law", r.request.unloading_law}};
+  return {{"name", "nan2022"},    {"yield_pressure_from", "given_pressure"},
+          {"k_el_from", "fixed"}, {"k_el", r.result.k_el},
+          {"k_p", r.result.k_p},  {"unloading_law", r.request.unloading_law}};
 }
 
 std::string format_scene_keys(const CalibrationResult& r) {

@@ -29,7 +29,8 @@ void validate_request(const CalibrationRequest& r) {
   require_range("--surface-energy", r.surface_energy, 0.0, Bound::closed, inf, Bound::open);
   require_positive("--yield-pressure", r.yield_pressure);
   if (r.unloading_law != "sqrt_max_overlap" && r.unloading_law != "plastic_offset")
-    throw ParameterError("--unloading-law = " + r.unloading_law + " is not valid (valid: sqrt_max_overlap, plastic_offset)");
+    throw ParameterError("--unloading-law = " + r.unloading_law +
+                         " is not valid (valid: sqrt_max_overlap, plastic_offset)");
   if (r.unloading_fit != "secant" && r.unloading_fit != "least_squares")
     throw ParameterError("--unloading-fit = " + r.unloading_fit + " is not valid (valid: secant, least_squares)");
   if (r.plastic_fit != "secants" && r.plastic_fit != "least_squares")
@@ -59,11 +60,11 @@ CalibrationResult run_calibration(const CalibrationRequest& request) {
   in.surface_energy = request.surface_energy;
   in.yield_pressure = request.yield_pressure;
   in.unloading_law = request.unloading_law == "plastic_offset" ? Nan2022UnloadingLaw::plastic_offset
-                                                                : Nan2022UnloadingLaw::sqrt_max_overlap;
-  in.unloading_fit = request.unloading_fit == "least_squares" ? Nan2022UnloadingFit::least_squares
-                                                               : Nan2022UnloadingFit::secant;
-  in.plastic_fit = request.plastic_fit == "least_squares" ? Nan2022PlasticFit::least_squares
-                                                           : Nan2022PlasticFit::secants;
+                                                               : Nan2022UnloadingLaw::sqrt_max_overlap;
+  in.unloading_fit =
+      request.unloading_fit == "least_squares" ? Nan2022UnloadingFit::least_squares : Nan2022UnloadingFit::secant;
+  in.plastic_fit =
+      request.plastic_fit == "least_squares" ? Nan2022PlasticFit::least_squares : Nan2022PlasticFit::secants;
 
   // Read and reduce each curve here (not inside nan2022_calibrate) so that errors and the report
   // name the file and column pair rather than a running index.

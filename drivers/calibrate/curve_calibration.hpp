@@ -15,16 +15,16 @@ namespace calibrate {
 // What the user asks for. Material inputs are of the tested contact, in SI units; the CSV cells
 // are multiplied by overlap_unit [m] and force_unit [N].
 struct CalibrationRequest {
-  std::vector<std::string> files;  // one curve per file, or one curve per column pair
+  std::vector<std::string> files;                                    // one curve per file, or one curve per column pair
   double E_star = std::numeric_limits<double>::quiet_NaN();          // [Pa]
   double R_star = std::numeric_limits<double>::quiet_NaN();          // [m]
   double surface_energy = std::numeric_limits<double>::quiet_NaN();  // [J/m^2]
   double yield_pressure = std::numeric_limits<double>::quiet_NaN();  // [Pa]
-  std::string unloading_law = "sqrt_max_overlap";  // Nan (45), or plastic_offset: Nan (49)
-  std::string unloading_fit = "secant";            // Nan (50), or least_squares
-  std::string plastic_fit = "secants";             // Nan (51), or least_squares
-  std::string overlap_unit = "m";                  // m, mm, um, nm
-  std::string force_unit = "N";                    // N, mN, uN, nN
+  std::string unloading_law = "sqrt_max_overlap";                    // Nan (45), or plastic_offset: Nan (49)
+  std::string unloading_fit = "secant";                              // Nan (50), or least_squares
+  std::string plastic_fit = "secants";                               // Nan (51), or least_squares
+  std::string overlap_unit = "m";                                    // m, mm, um, nm
+  std::string force_unit = "N";                                      // N, mN, uN, nN
 };
 
 // One curve as read, with where it came from ("file.csv" or "file.csv, column pair 2").

@@ -12,8 +12,8 @@ namespace calibrate {
 namespace {
 // Splits a line into cells; an empty cell between separators is kept (as "").
 std::vector<std::string> split_cells(const std::string& line) {  // host
-  std::vector<std::string> cells;  // host
-  std::string cur;  // host
+  std::vector<std::string> cells;                                // host
+  std::string cur;                                               // host
   bool any = false;
   const bool has_delim = line.find_first_of(",;\t") != std::string::npos;  // host
   for (char ch : line) {
@@ -38,8 +38,8 @@ bool parse_number(const std::string& s, double& v) {  // host
 }  // namespace
 
 std::vector<ForceOverlapCurve> parse_force_overlap_csv(std::istream& in, const std::string& source) {  // host
-  std::vector<ForceOverlapCurve> curves;  // host
-  std::string line;  // host
+  std::vector<ForceOverlapCurve> curves;                                                               // host
+  std::string line;                                                                                    // host
   int lineno = 0;
   bool first_data = true;
   while (std::getline(in, line)) {
@@ -47,7 +47,7 @@ std::vector<ForceOverlapCurve> parse_force_overlap_csv(std::istream& in, const s
     const auto p = line.find_first_not_of(" \t\r");
     if (p == std::string::npos || line[p] == '#') continue;  // host
     const auto cells = split_cells(line);
-    std::vector<double> vals(cells.size());  // host
+    std::vector<double> vals(cells.size());   // host
     std::vector<bool> present(cells.size());  // host
     bool numeric = true;
     for (std::size_t k = 0; k < cells.size(); ++k) {
@@ -55,13 +55,18 @@ std::vector<ForceOverlapCurve> parse_force_overlap_csv(std::istream& in, const s
       if (!present[k] && !cells[k].empty()) numeric = false;
     }
     if (!numeric) {
-      if (first_data && curves.empty()) { first_data = false; continue; }  // header
+      if (first_data && curves.empty()) {
+        first_data = false;
+        continue;
+      }                                                                                                      // header
       throw ParameterError(source + ":" + std::to_string(lineno) + ": non-numeric cell in '" + line + "'");  // host
     }
     first_data = false;
     if (cells.size() < 2 || cells.size() % 2 != 0)
-      throw ParameterError(source + ":" + std::to_string(lineno) + ": expected an even number of columns "  // host
-                           "(overlap, force pairs), got " + std::to_string(cells.size()));  // host
+      throw ParameterError(source + ":" + std::to_string(lineno) +
+                           ": expected an even number of columns "  // host
+                           "(overlap, force pairs), got " +
+                           std::to_string(cells.size()));  // host
     if (curves.empty()) curves.resize(cells.size() / 2);
     if (cells.size() / 2 != curves.size())
       throw ParameterError(source + ":" + std::to_string(lineno) + ": column count changed");  // host
@@ -69,8 +74,11 @@ std::vector<ForceOverlapCurve> parse_force_overlap_csv(std::istream& in, const s
       const bool a = present[2 * c], b = present[2 * c + 1];
       if (a != b)
         throw ParameterError(source + ":" + std::to_string(lineno) + ": curve " + std::to_string(c + 1) +  // host
-                             " has an overlap without a force or the reverse");  // host
-      if (a) { curves[c].overlap.push_back(vals[2 * c]); curves[c].force.push_back(vals[2 * c + 1]); }
+                             " has an overlap without a force or the reverse");                            // host
+      if (a) {
+        curves[c].overlap.push_back(vals[2 * c]);
+        curves[c].force.push_back(vals[2 * c + 1]);
+      }
     }
   }
   if (curves.empty()) throw ParameterError(source + ": no data");  // host

@@ -14,8 +14,9 @@
 #include <iostream>
 
 int main(int argc, char** argv) {
-  CLI::App app{"epac-calibrate: Nan et al. 2022 k_e, k_p, k_el, alpha_y, alpha_0, k_el/k_cl from loading/unloading "
-               "curves (Nan Sec. 3.3)"};
+  CLI::App app{
+      "epac-calibrate: Nan et al. 2022 k_e, k_p, k_el, alpha_y, alpha_0, k_el/k_cl from loading/unloading "
+      "curves (Nan Sec. 3.3)"};
   epac::calibrate::CalibrationRequest q;
   std::string json_path;
   bool no_scene = false;
@@ -25,8 +26,10 @@ int main(int argc, char** argv) {
       ->required();
   // Numbers are validated by run_calibration (messages name the option and its value), not by
   // CLI11 checks, so a negative or NaN value gets the same message as from the library.
-  app.add_option("--E-star", q.E_star, "effective modulus E* of the tested contact [Pa] (particle on a rigid wall: "
-                                        "E/(1-nu^2))")->required();
+  app.add_option("--E-star", q.E_star,
+                 "effective modulus E* of the tested contact [Pa] (particle on a rigid wall: "
+                 "E/(1-nu^2))")
+      ->required();
   app.add_option("--R-star", q.R_star, "effective radius R* of the tested contact [m]")->required();
   app.add_option("--surface-energy", q.surface_energy, "surface energy Gamma [J/m^2] (>= 0)")->required();
   app.add_option("--yield-pressure", q.yield_pressure, "yield pressure p_y [Pa]")->required();

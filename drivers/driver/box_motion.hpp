@@ -52,11 +52,12 @@ class BoxMotion {
     if (!periodic()) return;
     const PeriodicBox<T> box = p.box;
     auto x = p.x;
-    Kokkos::parallel_for("epac::driver::wrap_positions", Kokkos::RangePolicy<exec>(0, p.n), KOKKOS_LAMBDA(int i) {
-      x(i, 0) = PeriodicBox<T>::wrap(x(i, 0), box.lo.x, box.length.x);
-      x(i, 1) = PeriodicBox<T>::wrap(x(i, 1), box.lo.y, box.length.y);
-      x(i, 2) = PeriodicBox<T>::wrap(x(i, 2), box.lo.z, box.length.z);
-    });
+    Kokkos::parallel_for(
+        "epac::driver::wrap_positions", Kokkos::RangePolicy<exec>(0, p.n), KOKKOS_LAMBDA(int i) {
+          x(i, 0) = PeriodicBox<T>::wrap(x(i, 0), box.lo.x, box.length.x);
+          x(i, 1) = PeriodicBox<T>::wrap(x(i, 1), box.lo.y, box.length.y);
+          x(i, 2) = PeriodicBox<T>::wrap(x(i, 2), box.lo.z, box.length.z);
+        });
   }
 
   // Deforms the box to its edges at `step` and maps the positions affinely (remap x). Returns
@@ -77,11 +78,12 @@ class BoxMotion {
     apply(p);
     auto x = p.x;
     const T r0 = ratio[0], r1 = ratio[1], r2 = ratio[2], c0 = centre[0], c1 = centre[1], c2 = centre[2];
-    Kokkos::parallel_for("epac::driver::remap_x", Kokkos::RangePolicy<exec>(0, p.n), KOKKOS_LAMBDA(int i) {
-      x(i, 0) = c0 + r0 * (x(i, 0) - c0);
-      x(i, 1) = c1 + r1 * (x(i, 1) - c1);
-      x(i, 2) = c2 + r2 * (x(i, 2) - c2);
-    });
+    Kokkos::parallel_for(
+        "epac::driver::remap_x", Kokkos::RangePolicy<exec>(0, p.n), KOKKOS_LAMBDA(int i) {
+          x(i, 0) = c0 + r0 * (x(i, 0) - c0);
+          x(i, 1) = c1 + r1 * (x(i, 1) - c1);
+          x(i, 2) = c2 + r2 * (x(i, 2) - c2);
+        });
     return true;
   }
 

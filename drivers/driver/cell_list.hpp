@@ -23,12 +23,12 @@ namespace driver {
 
 template <class T, class Device>
 struct CellList {
-  Vec3<T> lo;         // lower corner of the grid
+  Vec3<T> lo;                   // lower corner of the grid
   Vec3<T> h{T(1), T(1), T(1)};  // cell edge per axis
   int nx = 1, ny = 1, nz = 1;
   bool px = false, py = false, pz = false;  // periodic axes
-  Kokkos::View<int*, Device> start;   // ncells + 1: particles of cell c are sorted(start(c) .. start(c+1)-1)
-  Kokkos::View<int*, Device> sorted;  // particle indices, cell-major, ascending within a cell
+  Kokkos::View<int*, Device> start;         // ncells + 1: particles of cell c are sorted(start(c) .. start(c+1)-1)
+  Kokkos::View<int*, Device> sorted;        // particle indices, cell-major, ascending within a cell
 
   int ncells() const { return nx * ny * nz; }
 
@@ -109,8 +109,9 @@ CellList<T, Device> build_cell_list(const Particles<T, Device>& p, T min_cell) {
         },
         bad);
     if (bad > 0)
-      throw std::runtime_error(std::to_string(bad) + " particle coordinates are not finite: the simulation diverged "  // host
-                               "(time step too large?)");  // host
+      throw std::runtime_error(std::to_string(bad) +
+                               " particle coordinates are not finite: the simulation diverged "  // host
+                               "(time step too large?)");                                        // host
     for (int d = 0; d < 3; ++d) {
       Kokkos::MinMaxScalar<T> mm;
       Kokkos::parallel_reduce(
@@ -164,36 +165,39 @@ CellList<T, Device> build_cell_list(const Particles<T, Device>& p, T min_cell) {
   cl.sorted = Kokkos::View<int*, Device>("epac::driver::cell_sorted", n);
   const CellList<T, Device> grid = cl;  // the geometry, captured by value
   auto x = p.x;
-  Kokkos::parallel_for("epac::driver::cell_count", Kokkos::RangePolicy<exec>(0, n), KOKKOS_LAMBDA(int i) {
-    const int c = grid.cell_of(load3(x, i));
-    particle_cell(i) = c;
-    Kokkos::atomic_add(&count(c), 1);
-  });
+  Kokkos::parallel_for(
+      "epac::driver::cell_count", Kokkos::RangePolicy<exec>(0, n), KOKKOS_LAMBDA(int i) {
+        const int c = grid.cell_of(load3(x, i));
+        particle_cell(i) = c;
+        Kokkos::atomic_add(&count(c), 1);
+      });
   auto start = cl.start;
-  Kokkos::parallel_scan("epac::driver::cell_scan", Kokkos::RangePolicy<exec>(0, nc + 1),
-                        KOKKOS_LAMBDA(int c, int& upd, bool final) {
-                          const int k = c < nc ? count(c) : 0;
-                          if (final) start(c) = upd;
-                          upd += k;
-                        });
+  Kokkos::parallel_scan(
+      "epac::driver::cell_scan", Kokkos::RangePolicy<exec>(0, nc + 1), KOKKOS_LAMBDA(int c, int& upd, bool final) {
+        const int k = c < nc ? count(c) : 0;
+        if (final) start(c) = upd;
+        upd += k;
+      });
   Kokkos::deep_copy(count, 0);  // reused as each cell's fill cursor
   auto sorted = cl.sorted;
-  Kokkos::parallel_for("epac::driver::cell_fill", Kokkos::RangePolicy<exec>(0, n), KOKKOS_LAMBDA(int i) {
-    const int c = particle_cell(i);
-    sorted(start(c) + Kokkos::atomic_fetch_add(&count(c), 1)) = i;
-  });
+  Kokkos::parallel_for(
+      "epac::driver::cell_fill", Kokkos::RangePolicy<exec>(0, n), KOKKOS_LAMBDA(int i) {
+        const int c = particle_cell(i);
+        sorted(start(c) + Kokkos::atomic_fetch_add(&count(c), 1)) = i;
+      });
   // Insertion sort of each cell's few entries: a deterministic order for any thread count.
-  Kokkos::parallel_for("epac::driver::cell_sort", Kokkos::RangePolicy<exec>(0, nc), KOKKOS_LAMBDA(int c) {
-    for (int a = start(c) + 1; a < start(c + 1); ++a) {
-      const int v = sorted(a);
-      int b = a - 1;
-      while (b >= start(c) && sorted(b) > v) {
-        sorted(b + 1) = sorted(b);
-        --b;
-      }
-      sorted(b + 1) = v;
-    }
-  });
+  Kokkos::parallel_for(
+      "epac::driver::cell_sort", Kokkos::RangePolicy<exec>(0, nc), KOKKOS_LAMBDA(int c) {
+        for (int a = start(c) + 1; a < start(c + 1); ++a) {
+          const int v = sorted(a);
+          int b = a - 1;
+          while (b >= start(c) && sorted(b) > v) {
+            sorted(b + 1) = sorted(b);
+            --b;
+          }
+          sorted(b + 1) = v;
+        }
+      });
   return cl;
 }
 

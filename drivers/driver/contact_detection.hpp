@@ -48,19 +48,20 @@ ContactList<Device> find_pairs(const Particles<T, Device>& p, const CellList<T, 
   const PeriodicBox<T> box = p.box;  // distances by minimum image on its periodic axes
   const bool periodic = box.periodic();
   Kokkos::View<int*, Device> offset("epac::driver::pair_offset", n + 1);
-  Kokkos::parallel_for("epac::driver::pair_count", Kokkos::RangePolicy<exec>(0, n), KOKKOS_LAMBDA(int i) {
-    const Vec3<T> xi = load3(x, i);
-    const T ri = r(i);
-    int c = 0;
-    cells.for_each_near(xi, [&](int j) {
-      if (j <= i) return;
-      Vec3<T> d = xi - load3(x, j);
-      if (periodic) d = box.minimum_image(d);
-      const T cut = ri + r(j) + skin;
-      if (dot(d, d) < cut * cut) ++c;
-    });
-    offset(i) = c;
-  });
+  Kokkos::parallel_for(
+      "epac::driver::pair_count", Kokkos::RangePolicy<exec>(0, n), KOKKOS_LAMBDA(int i) {
+        const Vec3<T> xi = load3(x, i);
+        const T ri = r(i);
+        int c = 0;
+        cells.for_each_near(xi, [&](int j) {
+          if (j <= i) return;
+          Vec3<T> d = xi - load3(x, j);
+          if (periodic) d = box.minimum_image(d);
+          const T cut = ri + r(j) + skin;
+          if (dot(d, d) < cut * cut) ++c;
+        });
+        offset(i) = c;
+      });
   int total = 0;
   Kokkos::parallel_scan(
       Kokkos::RangePolicy<exec>(0, n + 1),
@@ -74,26 +75,27 @@ ContactList<Device> find_pairs(const Particles<T, Device>& p, const CellList<T, 
   auto first = list.first;
   auto second = list.second;
   auto gid = p.gid;
-  Kokkos::parallel_for("epac::driver::pair_fill", Kokkos::RangePolicy<exec>(0, n), KOKKOS_LAMBDA(int i) {
-    const Vec3<T> xi = load3(x, i);
-    const T ri = r(i);
-    int k = offset(i);
-    cells.for_each_near(xi, [&](int j) {
-      if (j <= i) return;
-      Vec3<T> d = xi - load3(x, j);
-      if (periodic) d = box.minimum_image(d);
-      const T cut = ri + r(j) + skin;
-      if (dot(d, d) < cut * cut) {
-        // Oriented by global id: pair history that has a direction (the tangential spring's
-        // displacement of first relative to second) keeps its meaning when a spatial sort
-        // changes which of the two has the smaller index. Without a sort gid order is index order.
-        const bool swap = gid(j) < gid(i);
-        first(k) = swap ? j : i;
-        second(k) = swap ? i : j;
-        ++k;
-      }
-    });
-  });
+  Kokkos::parallel_for(
+      "epac::driver::pair_fill", Kokkos::RangePolicy<exec>(0, n), KOKKOS_LAMBDA(int i) {
+        const Vec3<T> xi = load3(x, i);
+        const T ri = r(i);
+        int k = offset(i);
+        cells.for_each_near(xi, [&](int j) {
+          if (j <= i) return;
+          Vec3<T> d = xi - load3(x, j);
+          if (periodic) d = box.minimum_image(d);
+          const T cut = ri + r(j) + skin;
+          if (dot(d, d) < cut * cut) {
+            // Oriented by global id: pair history that has a direction (the tangential spring's
+            // displacement of first relative to second) keeps its meaning when a spatial sort
+            // changes which of the two has the smaller index. Without a sort gid order is index order.
+            const bool swap = gid(j) < gid(i);
+            first(k) = swap ? j : i;
+            second(k) = swap ? i : j;
+            ++k;
+          }
+        });
+      });
   return list;
 }
 
@@ -110,13 +112,14 @@ ContactList<Device> find_wall_contacts(const Particles<T, Device>& p, const Wall
   auto wn = w.normal;
   Kokkos::View<int*, Device> offset("epac::driver::wall_offset", n + 1);
   if (nw > 0) {
-    Kokkos::parallel_for("epac::driver::wall_count", Kokkos::RangePolicy<exec>(0, n), KOKKOS_LAMBDA(int i) {
-      const Vec3<T> xi = load3(x, i);
-      int c = 0;
-      for (int k = 0; k < nw; ++k)
-        if (dot(xi - load3(wp, k), load3(wn, k)) < r(i) + skin) ++c;
-      offset(i) = c;
-    });
+    Kokkos::parallel_for(
+        "epac::driver::wall_count", Kokkos::RangePolicy<exec>(0, n), KOKKOS_LAMBDA(int i) {
+          const Vec3<T> xi = load3(x, i);
+          int c = 0;
+          for (int k = 0; k < nw; ++k)
+            if (dot(xi - load3(wp, k), load3(wn, k)) < r(i) + skin) ++c;
+          offset(i) = c;
+        });
   }
   int total = 0;
   Kokkos::parallel_scan(
@@ -131,16 +134,17 @@ ContactList<Device> find_wall_contacts(const Particles<T, Device>& p, const Wall
   auto first = list.first;
   auto second = list.second;
   if (nw > 0 && total > 0) {
-    Kokkos::parallel_for("epac::driver::wall_fill", Kokkos::RangePolicy<exec>(0, n), KOKKOS_LAMBDA(int i) {
-      const Vec3<T> xi = load3(x, i);
-      int c = offset(i);
-      for (int k = 0; k < nw; ++k)
-        if (dot(xi - load3(wp, k), load3(wn, k)) < r(i) + skin) {
-          first(c) = i;
-          second(c) = k;
-          ++c;
-        }
-    });
+    Kokkos::parallel_for(
+        "epac::driver::wall_fill", Kokkos::RangePolicy<exec>(0, n), KOKKOS_LAMBDA(int i) {
+          const Vec3<T> xi = load3(x, i);
+          int c = offset(i);
+          for (int k = 0; k < nw; ++k)
+            if (dot(xi - load3(wp, k), load3(wn, k)) < r(i) + skin) {
+              first(c) = i;
+              second(c) = k;
+              ++c;
+            }
+        });
   }
   return list;
 }
@@ -178,13 +182,17 @@ class ContactDetector {
     auto r = p.radius;
     Kokkos::parallel_reduce(
         "epac::driver::max_radius", Kokkos::RangePolicy<exec>(0, p.n),
-        KOKKOS_LAMBDA(int i, T& m) { if (r(i) > m) m = r(i); }, Kokkos::Max<T>(rmax));
+        KOKKOS_LAMBDA(int i, T& m) {
+          if (r(i) > m) m = r(i);
+        },
+        Kokkos::Max<T>(rmax));
     CellList<T, Device> cells = build_cell_list(p, T(2) * rmax + skin_);
     if (on_sort && *on_sort) {
       (*on_sort)(cells.sorted);
-      Kokkos::View<int*, Device> identity(Kokkos::view_alloc(Kokkos::WithoutInitializing, "epac::driver::cell_sorted"), p.n);
-      Kokkos::parallel_for("epac::driver::cell_identity", Kokkos::RangePolicy<exec>(0, p.n),
-                           KOKKOS_LAMBDA(int k) { identity(k) = k; });
+      Kokkos::View<int*, Device> identity(Kokkos::view_alloc(Kokkos::WithoutInitializing, "epac::driver::cell_sorted"),
+                                          p.n);
+      Kokkos::parallel_for(
+          "epac::driver::cell_identity", Kokkos::RangePolicy<exec>(0, p.n), KOKKOS_LAMBDA(int k) { identity(k) = k; });
       cells.sorted = identity;
     }
     pairs = find_pairs(p, cells, skin_, pairs);
@@ -218,8 +226,10 @@ class ContactDetector {
           const T grow = r(i) - rb(i);
           const T s = norm(load3(x, i) - load3(xb, i)) + (grow > T(0) ? grow : T(0));
           // NaN (a diverged particle) forces a rebuild, whose bounding box check reports it.
-          if (!(s == s)) v = T(1e30);
-          else if (s > v) v = s;
+          if (!(s == s))
+            v = T(1e30);
+          else if (s > v)
+            v = s;
         },
         Kokkos::Max<T>(m));
     return m;

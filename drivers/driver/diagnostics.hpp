@@ -35,11 +35,14 @@ void sample_state(const Particles<T, Device>& p, const Kokkos::View<unsigned cha
   auto m = p.mass;
   auto I = p.inertia;
   auto R = p.radius;
-  const double ke = ordered_sum<exec>("epac::driver::ke_trans", n,
+  const double ke = ordered_sum<exec>(
+      "epac::driver::ke_trans", n,
       KOKKOS_LAMBDA(int i) { return 0.5 * double(m(i)) * double(dot(load3(v, i), load3(v, i))); });
-  const double kr = ordered_sum<exec>("epac::driver::ke_rot", n,
+  const double kr = ordered_sum<exec>(
+      "epac::driver::ke_rot", n,
       KOKKOS_LAMBDA(int i) { return 0.5 * double(I(i)) * double(dot(load3(w, i), load3(w, i))); });
-  const double pe = ordered_sum<exec>("epac::driver::pe_gravity", n,
+  const double pe = ordered_sum<exec>(
+      "epac::driver::pe_gravity", n,
       KOKKOS_LAMBDA(int i) { return -double(m(i)) * double(dot(gravity, load3(x, i))); });
   s.ke_translational = ke;
   s.ke_rotational = kr;
@@ -53,9 +56,14 @@ void sample_state(const Particles<T, Device>& p, const Kokkos::View<unsigned cha
     auto ov = pair_out.overlap;
     auto a = pairs.first;
     auto b = pairs.second;
-    Kokkos::parallel_reduce("epac::driver::pair_active", Kokkos::RangePolicy<exec>(0, pairs.count),
-        KOKKOS_LAMBDA(int k, int& c) { if (ov(k) > T(0)) ++c; }, np);
-    Kokkos::parallel_reduce("epac::driver::pair_max_overlap", Kokkos::RangePolicy<exec>(0, pairs.count),
+    Kokkos::parallel_reduce(
+        "epac::driver::pair_active", Kokkos::RangePolicy<exec>(0, pairs.count),
+        KOKKOS_LAMBDA(int k, int& c) {
+          if (ov(k) > T(0)) ++c;
+        },
+        np);
+    Kokkos::parallel_reduce(
+        "epac::driver::pair_max_overlap", Kokkos::RangePolicy<exec>(0, pairs.count),
         KOKKOS_LAMBDA(int k, T& r) {
           const T q = ov(k) / math::min(R(a(k)), R(b(k)));  // radii > 0
           if (q > r) r = q;
@@ -65,9 +73,14 @@ void sample_state(const Particles<T, Device>& p, const Kokkos::View<unsigned cha
   if (walls.count > 0) {
     auto ov = wall_out.overlap;
     auto a = walls.first;
-    Kokkos::parallel_reduce("epac::driver::wall_active", Kokkos::RangePolicy<exec>(0, walls.count),
-        KOKKOS_LAMBDA(int k, int& c) { if (ov(k) > T(0)) ++c; }, nw);
-    Kokkos::parallel_reduce("epac::driver::wall_max_overlap", Kokkos::RangePolicy<exec>(0, walls.count),
+    Kokkos::parallel_reduce(
+        "epac::driver::wall_active", Kokkos::RangePolicy<exec>(0, walls.count),
+        KOKKOS_LAMBDA(int k, int& c) {
+          if (ov(k) > T(0)) ++c;
+        },
+        nw);
+    Kokkos::parallel_reduce(
+        "epac::driver::wall_max_overlap", Kokkos::RangePolicy<exec>(0, walls.count),
         KOKKOS_LAMBDA(int k, T& r) {
           const T q = ov(k) / R(a(k));
           if (q > r) r = q;
@@ -83,7 +96,8 @@ void sample_state(const Particles<T, Device>& p, const Kokkos::View<unsigned cha
     auto fn = wall_out.normal_force;
     auto wl = walls.second;
     for (int wall = 0; wall < nwalls; ++wall)
-      s.wall_force[wall] = ordered_sum<exec>("epac::driver::wall_force", walls.count,
+      s.wall_force[wall] = ordered_sum<exec>(
+          "epac::driver::wall_force", walls.count,
           KOKKOS_LAMBDA(int k) { return wl(k) == wall ? double(fn(k)) : 0.0; });
   }
 
@@ -91,8 +105,8 @@ void sample_state(const Particles<T, Device>& p, const Kokkos::View<unsigned cha
   if (any_driven) {
     auto f = p.force;
     for (int d = 0; d < 3; ++d)
-      s.driven_force[d] = ordered_sum<exec>("epac::driver::driven_force", n,
-          KOKKOS_LAMBDA(int i) { return driven(i) ? double(f(i, d)) : 0.0; });
+      s.driven_force[d] = ordered_sum<exec>(
+          "epac::driver::driven_force", n, KOKKOS_LAMBDA(int i) { return driven(i) ? double(f(i, d)) : 0.0; });
   }
 }
 
@@ -128,7 +142,8 @@ std::string divergence_check(const Particles<T, Device>& p, const Kokkos::View<u
   // q: the larger of (|v| dt / R) / vb and (|omega| dt) / wb; > 1 trips; a non-finite state gets
   // kNotFinite (a finite sentinel: no device infinity needed).
   constexpr double kNotFinite = 1e300;
-  Kokkos::parallel_reduce("epac::driver::divergence_watch", Kokkos::RangePolicy<exec>(0, p.n),
+  Kokkos::parallel_reduce(
+      "epac::driver::divergence_watch", Kokkos::RangePolicy<exec>(0, p.n),
       KOKKOS_LAMBDA(int i, typename Reducer::value_type& m) {
         double q = 0;
         bool finite = math::isfinite(double(R(i)));
@@ -174,8 +189,9 @@ std::string divergence_check(const Particles<T, Device>& p, const Kokkos::View<u
                   "|v| dt = %.4g m is above the bound %g R = %.4g m (|v| = %.4g m/s, R = %.4g m, dt = %.4g s)", vv * dt,
                   vb, vb * r, vv, r, dt);
   } else {
-    std::snprintf(buf + at, sizeof buf - at, "|omega| dt = %.4g rad is above the bound %g rad (|omega| = %.4g rad/s, dt = %.4g s)",
-                  ww * dt, wb, ww, dt);
+    std::snprintf(buf + at, sizeof buf - at,
+                  "|omega| dt = %.4g rad is above the bound %g rad (|omega| = %.4g rad/s, dt = %.4g s)", ww * dt, wb,
+                  ww, dt);
   }
   return buf;
 }

@@ -33,9 +33,10 @@ class DrivenMotion {
   void reindex(const Kokkos::View<int*, Device>& inv) {
     if (idx_.empty()) return;
     const auto idx = d_idx_;
-    Kokkos::parallel_for("epac::driver::driven_reindex",
-                         Kokkos::RangePolicy<typename Device::execution_space>(0, static_cast<int>(idx_.size())),
-                         KOKKOS_LAMBDA(int k) { idx(k) = inv(idx(k)); });
+    Kokkos::parallel_for(
+        "epac::driver::driven_reindex",
+        Kokkos::RangePolicy<typename Device::execution_space>(0, static_cast<int>(idx_.size())),
+        KOKKOS_LAMBDA(int k) { idx(k) = inv(idx(k)); });
   }
 
   // Sets the driven velocities for the step [t0, t0 + dt].
@@ -57,11 +58,11 @@ class DrivenMotion {
     const auto idx = d_idx_;
     const auto vel = d_vel_;
     const auto v = p.v;
-    Kokkos::parallel_for("epac::driver::driven_motion",
-                         Kokkos::RangePolicy<typename Device::execution_space>(0, static_cast<int>(idx_.size())),
-                         KOKKOS_LAMBDA(int k) {
-                           for (int c = 0; c < 3; ++c) v(idx(k), c) = vel(k, c);
-                         });
+    Kokkos::parallel_for(
+        "epac::driver::driven_motion",
+        Kokkos::RangePolicy<typename Device::execution_space>(0, static_cast<int>(idx_.size())), KOKKOS_LAMBDA(int k) {
+          for (int c = 0; c < 3; ++c) v(idx(k), c) = vel(k, c);
+        });
   }
 
  private:

@@ -26,8 +26,9 @@ inline void warn_on_guard_hits(RunSummary& sum) {
   std::string text = "growth guards acted (" + m.str() +
                      "): the radius update was clamped there, so those particles do not follow the model";
   if (sum.initial_history.overlapping_contacts > 0 && !sum.initial_history.applied)
-    text += "; the scene started with overlapping contacts and fresh history (run.initial_history = \"zero\"), "
-            "which loads each overlap in one increment: \"from_overlaps\" starts from a quasi-static load";
+    text +=
+        "; the scene started with overlapping contacts and fresh history (run.initial_history = \"zero\"), "
+        "which loads each overlap in one increment: \"from_overlaps\" starts from a quasi-static load";
   else
     text += " (high confinement, radius cap or a time step too large for the compaction rate)";
   sum.warnings.push_back(text);

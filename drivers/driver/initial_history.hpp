@@ -31,19 +31,20 @@ bool start_history(const Scene& scene, const Model& model, const Particles<T, De
   }
   if (scene.run.initial_history == "zero") {
     if (info)
-      std::printf("initial history: zero (run.initial_history): %d contacts start overlapping (%d pairs, %d walls), "
-                  "largest overlap %.3g R, with fresh history\n",
-                  census.contacts(), census.pair_contacts, census.wall_contacts, census.max_overlap_ratio);
+      std::printf(
+          "initial history: zero (run.initial_history): %d contacts start overlapping (%d pairs, %d walls), "
+          "largest overlap %.3g R, with fresh history\n",
+          census.contacts(), census.pair_contacts, census.wall_contacts, census.max_overlap_ratio);
     return false;
   }
   const HistoryFromOverlapsReport rep =
       history_from_overlaps(model, p, det.pairs, det.pair_history, w, det.walls, det.wall_history);
   if (rep.increments == 0) {  // a law without contact history: its contacts start as they are
     if (info)
-      std::printf("initial history: %d contacts start overlapping (%d pairs, %d walls), largest overlap %.3g R; "
-                  "model %s keeps no contact history, so nothing is loaded\n",
-                  census.contacts(), census.pair_contacts, census.wall_contacts, census.max_overlap_ratio,
-                  Model::name);
+      std::printf(
+          "initial history: %d contacts start overlapping (%d pairs, %d walls), largest overlap %.3g R; "
+          "model %s keeps no contact history, so nothing is loaded\n",
+          census.contacts(), census.pair_contacts, census.wall_contacts, census.max_overlap_ratio, Model::name);
     return false;
   }
   ih.applied = true;
@@ -51,10 +52,10 @@ bool start_history(const Scene& scene, const Model& model, const Particles<T, De
   ih.max_radius_ratio = rep.max_radius_ratio;
   ih.guard_hits = rep.guard_hits;
   if (info) {
-    std::printf("initial history: from overlaps: %d contacts (%d pairs, %d walls), largest overlap %.3g R, "
-                "quasi-static load in %d increments",
-                census.contacts(), census.pair_contacts, census.wall_contacts, census.max_overlap_ratio,
-                rep.increments);
+    std::printf(
+        "initial history: from overlaps: %d contacts (%d pairs, %d walls), largest overlap %.3g R, "
+        "quasi-static load in %d increments",
+        census.contacts(), census.pair_contacts, census.wall_contacts, census.max_overlap_ratio, rep.increments);
     if (rep.max_radius_ratio > 1.0) std::printf("; largest R/R_o %.4g", rep.max_radius_ratio);
     if (rep.guard_hits > 0) std::printf("; growth guards acted %lld times", rep.guard_hits);
     std::printf("\n");

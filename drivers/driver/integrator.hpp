@@ -26,23 +26,24 @@ void half_kick(const Particles<T, Device>& p, const Kokkos::View<unsigned char*,
   auto tq = p.torque;
   auto m = p.mass;
   auto I = p.inertia;
-  Kokkos::parallel_for("epac::driver::half_kick", Kokkos::RangePolicy<exec>(0, p.n), KOKKOS_LAMBDA(int i) {
-    if (driven(i)) return;
-    const T inv_m = T(1) / m(i);
-    const T inv_I = T(1) / I(i);
-    v(i, 0) += half_dt * (f(i, 0) * inv_m + gravity.x);
-    v(i, 1) += half_dt * (f(i, 1) * inv_m + gravity.y);
-    v(i, 2) += half_dt * (f(i, 2) * inv_m + gravity.z);
-    for (int d = 0; d < 3; ++d) w(i, d) += half_dt * tq(i, d) * inv_I;
-  });
+  Kokkos::parallel_for(
+      "epac::driver::half_kick", Kokkos::RangePolicy<exec>(0, p.n), KOKKOS_LAMBDA(int i) {
+        if (driven(i)) return;
+        const T inv_m = T(1) / m(i);
+        const T inv_I = T(1) / I(i);
+        v(i, 0) += half_dt * (f(i, 0) * inv_m + gravity.x);
+        v(i, 1) += half_dt * (f(i, 1) * inv_m + gravity.y);
+        v(i, 2) += half_dt * (f(i, 2) * inv_m + gravity.z);
+        for (int d = 0; d < 3; ++d) w(i, d) += half_dt * tq(i, d) * inv_I;
+      });
 }
 
 // v += kick_dt (F/m + g), omega += kick_dt torque/I (not for driven particles); force = torque
 // = 0; x += dt v. Returns max_i (|x_i - x_ref_i| + max(0, R_i - R_ref_i)), the rebuild measure
 // of ContactDetector (a non-finite position returns 1e30 so that the rebuild reports it).
 template <class T, class Device>
-T kick_drift(const Particles<T, Device>& p, const Kokkos::View<unsigned char*, Device>& driven,
-             const Vec3<T>& gravity, T kick_dt, T dt, const Kokkos::View<T* [3], Kokkos::LayoutLeft, Device>& x_ref,
+T kick_drift(const Particles<T, Device>& p, const Kokkos::View<unsigned char*, Device>& driven, const Vec3<T>& gravity,
+             T kick_dt, T dt, const Kokkos::View<T* [3], Kokkos::LayoutLeft, Device>& x_ref,
              const Kokkos::View<T*, Device>& r_ref) {
   using exec = typename Device::execution_space;
   auto x = p.x;
@@ -72,8 +73,10 @@ T kick_drift(const Particles<T, Device>& p, const Kokkos::View<unsigned char*, D
         }
         const T grow = R(i) - r_ref(i);
         const T si = norm(load3(x, i) - load3(x_ref, i)) + (grow > T(0) ? grow : T(0));
-        if (!(si == si)) s = T(1e30);
-        else if (si > s) s = si;
+        if (!(si == si))
+          s = T(1e30);
+        else if (si > s)
+          s = si;
       },
       Kokkos::Max<T>(shift));
   return shift;

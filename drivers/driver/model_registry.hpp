@@ -81,9 +81,7 @@ double nan2022_scene_check(const Scene&);
 double jkr_scene_check(const Scene&);
 
 // [model] key values (ModelSpec::params) for a choice key: the index as an int.
-inline int choice_of(const Scene& s, const std::string& key) {
-  return static_cast<int>(s.model.params.at(key));
-}
+inline int choice_of(const Scene& s, const std::string& key) { return static_cast<int>(s.model.params.at(key)); }
 
 }  // namespace driver
 }  // namespace epac

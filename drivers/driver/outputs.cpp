@@ -84,7 +84,8 @@ void StagedFile::commit() {
   if (!ok) throw std::runtime_error("cannot write '" + path_ + kPartialSuffix + "'");
   std::error_code ec;
   std::filesystem::rename(path_ + kPartialSuffix, path_, ec);
-  if (ec) throw std::runtime_error("cannot rename '" + path_ + kPartialSuffix + "' to '" + path_ + "': " + ec.message());
+  if (ec)
+    throw std::runtime_error("cannot rename '" + path_ + kPartialSuffix + "' to '" + path_ + "': " + ec.message());
   committed_ = true;
 }
 
@@ -138,13 +139,12 @@ ParticlesWriter::ParticlesWriter(const std::string& path) : file_(path), out_(fi
   out_ << "step,time [s],id,x [m],y [m],z [m],R [m],R0 [m],volume [m^3]\n" << std::setprecision(10);
 }
 
-void ParticlesWriter::write(std::int64_t step, double time, const std::vector<double>& x,
-                            const std::vector<double>& y, const std::vector<double>& z,
-                            const std::vector<double>& R, const std::vector<double>& R0,
+void ParticlesWriter::write(std::int64_t step, double time, const std::vector<double>& x, const std::vector<double>& y,
+                            const std::vector<double>& z, const std::vector<double>& R, const std::vector<double>& R0,
                             const std::vector<double>& V) {
   for (std::size_t k = 0; k < x.size(); ++k)
-    out_ << step << ',' << time << ',' << k << ',' << x[k] << ',' << y[k] << ',' << z[k] << ',' << R[k] << ','
-         << R0[k] << ',' << V[k] << '\n';
+    out_ << step << ',' << time << ',' << k << ',' << x[k] << ',' << y[k] << ',' << z[k] << ',' << R[k] << ',' << R0[k]
+         << ',' << V[k] << '\n';
 }
 
 void write_summary_json(const std::string& path, const RunSummary& s) {
@@ -195,7 +195,8 @@ void write_summary_json(const std::string& path, const RunSummary& s) {
     j["model_counters"] = c;
   }
   const InitialHistorySummary& ih = s.initial_history;
-  j["initial_history"] = {{"mode", ih.mode}, {"overlapping_contacts", ih.overlapping_contacts},
+  j["initial_history"] = {{"mode", ih.mode},
+                          {"overlapping_contacts", ih.overlapping_contacts},
                           {"max_overlap_ratio", ih.max_overlap_ratio}};
   if (ih.applied) {
     j["initial_history"]["increments"] = ih.increments;
@@ -219,8 +220,8 @@ void ProgressLine::update(std::int64_t step, double contact_steps) {
   const double rate = step / t;
   const double eta = rate > 0 ? (total_ - step) / rate : 0.0;
   std::printf("\rstep %lld/%lld (%3.0f%%)  %.0f steps/s  %.3g contact-steps/s  ETA %.0f s   ",
-              static_cast<long long>(step), static_cast<long long>(total_),
-              total_ > 0 ? 100.0 * step / total_ : 100.0, rate, contact_steps / t, eta);
+              static_cast<long long>(step), static_cast<long long>(total_), total_ > 0 ? 100.0 * step / total_ : 100.0,
+              rate, contact_steps / t, eta);
   std::fflush(stdout);
   printed_ = true;
 }

@@ -80,7 +80,7 @@ struct ContactRows {
   std::vector<std::int64_t> i, j;  // global ids; j = -1 for a wall contact
   std::vector<int> wall;           // wall index, -1 for a pair
   std::vector<double> overlap, force;
-  std::vector<double> extras;      // row-major, extra_count per row
+  std::vector<double> extras;  // row-major, extra_count per row
   int extra_count = 0;
 };
 class ContactsWriter {

@@ -80,7 +80,11 @@ void check_no_overlap(const std::vector<ParticleSpec>& ps, const BoxSpec* box) {
           grid.any_near(xi, [&](int j) {
             const double d = distance(xi, ps[j].position);
             const double sum = ps[i].radius + ps[j].radius;
-            if (sum - d > 1e-12 * sum) { hit = j; hit_d = d; return true; }
+            if (sum - d > 1e-12 * sum) {
+              hit = j;
+              hit_d = d;
+              return true;
+            }
             return false;
           });
         }
@@ -89,8 +93,8 @@ void check_no_overlap(const std::vector<ParticleSpec>& ps, const BoxSpec* box) {
       const auto& b = ps[i];
       const double d = hit_d;
       std::ostringstream s;
-      s << a.origin << " and " << b.origin << " overlap by " << (a.radius + b.radius - d)
-        << " m (centre distance " << d << " m < R_i + R_j = " << (a.radius + b.radius)
+      s << a.origin << " and " << b.origin << " overlap by " << (a.radius + b.radius - d) << " m (centre distance " << d
+        << " m < R_i + R_j = " << (a.radius + b.radius)
         << " m; valid: distance >= R_i + R_j); set particles.allow_overlap = true to allow it";
       throw SceneError(s.str());
     }
@@ -134,17 +138,15 @@ void fill_box(const FillSpec& f, std::vector<ParticleSpec>& ps) {
   while (placed < f.count) {
     if (++attempts > max_attempts) {
       std::ostringstream s;
-      s << "particles.fill: placed only " << placed << " of count = " << f.count << " particles after "
-        << max_attempts << " attempts (solid fraction " << fraction
-        << "); enlarge the box or lower the count";
+      s << "particles.fill: placed only " << placed << " of count = " << f.count << " particles after " << max_attempts
+        << " attempts (solid fraction " << fraction << "); enlarge the box or lower the count";
       throw SceneError(s.str());
     }
     ParticleSpec p;
     p.radius = r1 > r0 ? uniform(r0, r1) : r0;
     for (int d = 0; d < 3; ++d) p.position[d] = uniform(f.box_min[d] + p.radius, f.box_max[d] - p.radius);
-    const bool blocked = grid.any_near(p.position, [&](int j) {
-      return distance(p.position, ps[j].position) < p.radius + ps[j].radius;
-    });
+    const bool blocked = grid.any_near(
+        p.position, [&](int j) { return distance(p.position, ps[j].position) < p.radius + ps[j].radius; });
     if (blocked) continue;
     p.material = f.material;
     p.velocity = f.velocity;

@@ -30,13 +30,13 @@ struct RunOptions {
 
 // How the contact history started ([run] initial_history, driver/initial_history.hpp).
 struct InitialHistorySummary {
-  std::string mode = "zero";       // what was done: "from_overlaps" or "zero"
-  bool applied = false;            // history_from_overlaps ran
-  int overlapping_contacts = 0;    // contacts overlapping at step 0
-  double max_overlap_ratio = 0;    // largest overlap / min(R_o) at step 0
-  int increments = 0;              // load increments (applied only)
-  double max_radius_ratio = 1;     // largest R / R_o after the load (MDR growth)
-  long long guard_hits = 0;        // growth-guard hits during the load
+  std::string mode = "zero";     // what was done: "from_overlaps" or "zero"
+  bool applied = false;          // history_from_overlaps ran
+  int overlapping_contacts = 0;  // contacts overlapping at step 0
+  double max_overlap_ratio = 0;  // largest overlap / min(R_o) at step 0
+  int increments = 0;            // load increments (applied only)
+  double max_radius_ratio = 1;   // largest R / R_o after the load (MDR growth)
+  long long guard_hits = 0;      // growth-guard hits during the load
 };
 
 struct RunSummary {
@@ -45,15 +45,15 @@ struct RunSummary {
   std::string status = "completed";
   std::string status_reason;
   int stop_signal = 0;
-  std::int64_t steps_completed = 0;   // steps whose outputs were written (== steps when completed)
+  std::int64_t steps_completed = 0;  // steps whose outputs were written (== steps when completed)
   std::string scene, model, effects, scalar, backend;
   int threads = 0;
   std::int64_t particles = 0, walls = 0, steps = 0, rebuilds = 0;
   double dt = 0, simulated_time = 0;
-  double wall_time_s = 0;             // the stepping loop only
-  double setup_time_s = 0;            // device state, first detection and forces
-  double contacts_mean = 0;           // active contacts (overlap > 0), mean over output samples
-  double contact_list_mean = 0;       // entries of the pair + wall lists, mean over steps
+  double wall_time_s = 0;                      // the stepping loop only
+  double setup_time_s = 0;                     // device state, first detection and forces
+  double contacts_mean = 0;                    // active contacts (overlap > 0), mean over output samples
+  double contact_list_mean = 0;                // entries of the pair + wall lists, mean over steps
   double contact_steps_per_second = 0;         // list entries evaluated per second of wall time
   double active_contact_steps_per_second = 0;  // contacts_mean x steps / wall time
   double particle_steps_per_second = 0;        // particles x steps / wall time

@@ -127,11 +127,12 @@ class SceneRun {
   // dt / T_R matters for Hertz-type laws acting on integrated particles (not for linear_spring,
   // whose stiffness is its own, nor for a scene of driven particles only).
   void check_time_step() {
-    const bool all_driven = std::all_of(scene_.particles.begin(), scene_.particles.end(),
-                                        [](const ParticleSpec& q) { return q.driven; });
+    const bool all_driven =
+        std::all_of(scene_.particles.begin(), scene_.particles.end(), [](const ParticleSpec& q) { return q.driven; });
     dt_ratio_ = scene_.model.name == "linear_spring" || all_driven ? 0.0 : scene_.run.dt / rayleigh_time(scene_);
     if (dt_ratio_ > 1.0)  // a warning, not only information: printed with --quiet too
-      std::fprintf(stderr, "epac-run: warning: run.dt = %g s is %.3g smallest Rayleigh times (explicit DEM needs "
+      std::fprintf(stderr,
+                   "epac-run: warning: run.dt = %g s is %.3g smallest Rayleigh times (explicit DEM needs "
                    "about 0.1-0.3); the divergence watch stops the run if particles start to fly apart\n",
                    scene_.run.dt, dt_ratio_);
   }
@@ -150,8 +151,7 @@ class SceneRun {
 
   // The first contact lists, the initial history, and the force pass's accumulators.
   void build_contacts() {
-    if (scene_.run.spatial_sort)
-      on_sort_ = [this](const Kokkos::View<int*, Device>& perm) { sort_particles(perm); };
+    if (scene_.run.spatial_sort) on_sort_ = [this](const Kokkos::View<int*, Device>& perm) { sort_particles(perm); };
     det_.detect(p_, walls_, &on_sort_);
     det_.remap(p_);
     // [run] initial_history: contacts overlapping at step 0 start from a quasi-static load
@@ -184,10 +184,9 @@ class SceneRun {
     std::vector<std::string> wall_names;
     for (const auto& w : scene_.walls) wall_names.push_back(w.name);
     if (scene_.run.contact_output)
-      contacts_csv_ = std::make_unique<ContactsWriter>(opt_.out_dir + "/contacts.csv", F::contact_extra_names(),
-                                                       wall_names);
-    if (scene_.run.particle_output)
-      particles_csv_ = std::make_unique<ParticlesWriter>(opt_.out_dir + "/particles.csv");
+      contacts_csv_ =
+          std::make_unique<ContactsWriter>(opt_.out_dir + "/contacts.csv", F::contact_extra_names(), wall_names);
+    if (scene_.run.particle_output) particles_csv_ = std::make_unique<ParticlesWriter>(opt_.out_dir + "/particles.csv");
     // [run] snapshot_format = "vtp": particles.pvd + snapshots/*.vtp
     if (scene_.run.snapshot_format == "vtp") snapshots_ = std::make_unique<SnapshotWriter>(opt_.out_dir);
     csv_ = std::make_unique<TimeseriesWriter>(sum_.timeseries_path, wall_names, any_driven_, scene_.box.enabled);
@@ -212,15 +211,19 @@ class SceneRun {
     if (with_outputs) size_outputs();
     if (!sums_.bound_to(p_)) sums_ = ForceSums<T, Device>(p_);
     const ContactOutputs<T, Device> none{};
-    if (deterministic_) det_pass_.begin(model_);
-    else sums_.begin();
+    if (deterministic_)
+      det_pass_.begin(model_);
+    else
+      sums_.begin();
     compute_pair_forces(model_, p_, det_.pairs, det_.pair_history, step_dt, sums_, with_outputs ? pair_out_ : none,
                         det_pass_.pair_buffer);
     if (nw_ > 0)
       compute_wall_forces(model_, p_, walls_, det_.walls, det_.wall_history, step_dt, sums_,
                           with_outputs ? wall_out_ : none, det_pass_.wall_buffer);
-    if (deterministic_) det_pass_.end(model_, p_);
-    else sums_.end();
+    if (deterministic_)
+      det_pass_.end(model_, p_);
+    else
+      sums_.end();
     phases_.lap(Phase::force);
     if (with_outputs && contacts_csv_) {  // before after_forces: the geometry the force pass saw
       contacts_csv_->write(step, step * scene_.run.dt,
@@ -270,8 +273,11 @@ class SceneRun {
     std::vector<double> xs(n), ys(n), zs(n), Rs(n), R0s(n), Vs(n);
     for (int i = 0; i < n; ++i) {  // rows in global-id order (the arrays may be spatially sorted)
       const std::size_t k = static_cast<std::size_t>(gid(i));
-      xs[k] = x(i, 0); ys[k] = x(i, 1); zs[k] = x(i, 2);
-      Rs[k] = R(i); R0s[k] = R0(i);
+      xs[k] = x(i, 0);
+      ys[k] = x(i, 1);
+      zs[k] = x(i, 2);
+      Rs[k] = R(i);
+      R0s[k] = R0(i);
       Vs[k] = static_cast<int>(V.extent(0)) == n ? double(V(i)) : 4.0 / 3.0 * M_PI * Rs[k] * Rs[k] * Rs[k];
     }
     particles_csv_->write(step, step * scene_.run.dt, xs, ys, zs, Rs, R0s, Vs);
@@ -337,8 +343,8 @@ class SceneRun {
     // [box.deform] remap x, before the drift: the rebuild measure below sees it as displacement
     box_.deform_to(p_, step);
     // closing half kick of the previous step (if deferred) + opening half kick + drift
-    const T shift = kick_drift(p_, driven_, g_, full_step_velocities_ ? half_dt_ : dt_, dt_,
-                               det_.reference_positions(), det_.reference_radii());
+    const T shift = kick_drift(p_, driven_, g_, full_step_velocities_ ? half_dt_ : dt_, dt_, det_.reference_positions(),
+                               det_.reference_radii());
     wall_driver_->advance((step - 1) * scene_.run.dt, scene_.run.dt);
     phases_.lap(Phase::integration);
     return shift;
@@ -365,7 +371,9 @@ class SceneRun {
   void interrupt(int signal, std::int64_t step) {
     sum_.status = "interrupted";
     sum_.stop_signal = signal;
-    sum_.status_reason = std::string(signal == SIGINT ? "SIGINT" : signal == SIGTERM ? "SIGTERM" : "signal") +
+    sum_.status_reason = std::string(signal == SIGINT    ? "SIGINT"
+                                     : signal == SIGTERM ? "SIGTERM"
+                                                         : "signal") +
                          " after step " + std::to_string(step);
   }
 
@@ -421,10 +429,11 @@ class SceneRun {
 
   void print_results() const {
     for (const auto& kv : sum_.model_counters) std::printf("%s = %.10g\n", kv.first.c_str(), kv.second);
-    std::printf("%lld steps in %.3f s (setup %.3f s): %.3g contact-steps/s (list entries), %.1f contacts (mean, "
-                "active), %lld rebuilds\n",
-                static_cast<long long>(stats_.done), sum_.wall_time_s, sum_.setup_time_s,
-                sum_.contact_steps_per_second, sum_.contacts_mean, static_cast<long long>(sum_.rebuilds));
+    std::printf(
+        "%lld steps in %.3f s (setup %.3f s): %.3g contact-steps/s (list entries), %.1f contacts (mean, "
+        "active), %lld rebuilds\n",
+        static_cast<long long>(stats_.done), sum_.wall_time_s, sum_.setup_time_s, sum_.contact_steps_per_second,
+        sum_.contacts_mean, static_cast<long long>(sum_.rebuilds));
     if (phases_.enabled()) {
       std::printf("phases [s]:");
       for (const auto& kv : sum_.phases) std::printf(" %s %.3f", kv.first.c_str(), kv.second);
@@ -438,8 +447,8 @@ class SceneRun {
   const clock::time_point setup_start_;
   Model model_;
   RunSummary sum_;
-  bool info_ = false;     // informational lines (not --quiet)
-  double dt_ratio_ = 0;   // run.dt / smallest Rayleigh time; 0 where it does not apply
+  bool info_ = false;    // informational lines (not --quiet)
+  double dt_ratio_ = 0;  // run.dt / smallest Rayleigh time; 0 where it does not apply
   // device state (build_state)
   Kokkos::View<unsigned char*, Device> driven_;
   Particles<T, Device> p_;

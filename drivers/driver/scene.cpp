@@ -41,13 +41,20 @@ constexpr PhysicalRange kGravity{-1e5, 1e5, "m/s^2 per component, 1e4 g"};
 
 std::string type_name(const toml::node& n) {
   switch (n.type()) {
-    case toml::node_type::table: return "a table";
-    case toml::node_type::array: return "an array";
-    case toml::node_type::string: return "a string";
-    case toml::node_type::integer: return "an integer";
-    case toml::node_type::floating_point: return "a float";
-    case toml::node_type::boolean: return "a boolean";
-    default: return "a date/time";
+    case toml::node_type::table:
+      return "a table";
+    case toml::node_type::array:
+      return "an array";
+    case toml::node_type::string:
+      return "a string";
+    case toml::node_type::integer:
+      return "an integer";
+    case toml::node_type::floating_point:
+      return "a float";
+    case toml::node_type::boolean:
+      return "a boolean";
+    default:
+      return "a date/time";
   }
 }
 
@@ -169,16 +176,19 @@ class TableReader {
       if (allowed_.count(key)) continue;
       std::string valid;
       for (const auto& a : allowed_) valid += (valid.empty() ? "" : ", ") + a;
-      throw SceneError("unknown key '" + key + "' in " + (path_.empty() ? std::string("the top level") : "[" + path_ + "]") +
-                       line_of(v) + " (valid keys: " + valid + ")");
+      throw SceneError("unknown key '" + key + "' in " +
+                       (path_.empty() ? std::string("the top level") : "[" + path_ + "]") + line_of(v) +
+                       " (valid keys: " + valid + ")");
     }
   }
 
   static std::string range_text(double lo, Bound lk, double hi, Bound hk) {
     std::ostringstream s;
     s << (lk == Bound::open ? "(" : "[") << lo << ", ";
-    if (std::isinf(hi)) s << "inf)";
-    else s << hi << (hk == Bound::open ? ")" : "]");
+    if (std::isinf(hi))
+      s << "inf)";
+    else
+      s << hi << (hk == Bound::open ? ")" : "]");
     return s.str();
   }
 
@@ -186,16 +196,12 @@ class TableReader {
                     const toml::node& n) {
     try {
       require_range(name, v, lo, lk, hi, hk, allow_inf);
-    } catch (const ParameterError& e) {
-      throw SceneError(e.what() + line_of(n));
-    }
+    } catch (const ParameterError& e) { throw SceneError(e.what() + line_of(n)); }
   }
   static void check(const std::string& name, double v, const PhysicalRange& r, const toml::node& n) {
     try {
       require_range(name, v, r.lo, Bound::closed, r.hi, Bound::closed);
-    } catch (const ParameterError& e) {
-      throw SceneError(e.what() + std::string(" (") + r.note + ")" + line_of(n));
-    }
+    } catch (const ParameterError& e) { throw SceneError(e.what() + std::string(" (") + r.note + ")" + line_of(n)); }
   }
 
   static Vec3d vec3_of(const toml::node& n, const std::string& where, const PhysicalRange* range = nullptr) {
@@ -207,8 +213,10 @@ class TableReader {
     for (int d = 0; d < 3; ++d) {
       const std::string w = where + "[" + std::to_string(d) + "]";
       v[d] = as_number(*a->get(d), w);
-      if (range) check(w, v[d], *range, *a->get(d));
-      else check(w, v[d], -kInf, Bound::open, kInf, Bound::open, false, *a->get(d));
+      if (range)
+        check(w, v[d], *range, *a->get(d));
+      else
+        check(w, v[d], -kInf, Bound::open, kInf, Bound::open, false, *a->get(d));
     }
     return v;
   }
@@ -244,7 +252,8 @@ void parse_materials(TableReader& top, Scene& s) {
     m.name = name;
     m.rigid = r.boolean("rigid", false);
     auto read = [&](const char* key, double& field, bool required) {
-      if (auto v = r.raw_number(key)) field = *v;
+      if (auto v = r.raw_number(key))
+        field = *v;
       else if (required)
         throw SceneError(path + "." + key + " is missing (required for a non-rigid material; valid range (0, inf))");
     };
@@ -295,17 +304,20 @@ void parse_model(TableReader& top, Scene& s) {
       double index = k.default_value;
       if (const toml::node* n = r.get(k.name)) {
         auto str = n->as_string();
-        if (!str) throw SceneError(r.key_path(k.name) + " must be a string (valid: " + valid + "), got " + type_name(*n) + line_of(*n));
+        if (!str)
+          throw SceneError(r.key_path(k.name) + " must be a string (valid: " + valid + "), got " + type_name(*n) +
+                           line_of(*n));
         auto it = std::find(k.choices.begin(), k.choices.end(), str->get());
         if (it == k.choices.end())
-          throw SceneError(r.key_path(k.name) + " = \"" + str->get() + "\" is not valid (valid: " + valid + ")" + line_of(*n));
+          throw SceneError(r.key_path(k.name) + " = \"" + str->get() + "\" is not valid (valid: " + valid + ")" +
+                           line_of(*n));
         index = static_cast<double>(it - k.choices.begin());
       }
       s.model.params[k.name] = index;
       continue;
     }
-    s.model.params[k.name] =
-        r.number(k.name, k.lo, k.lo_kind, k.hi, k.hi_kind, k.has_default ? std::optional<double>(k.default_value) : std::nullopt);
+    s.model.params[k.name] = r.number(k.name, k.lo, k.lo_kind, k.hi, k.hi_kind,
+                                      k.has_default ? std::optional<double>(k.default_value) : std::nullopt);
   }
   if (const toml::array* eff = r.array("effects")) {
     s.model.effects_overridden = true;
@@ -317,8 +329,8 @@ void parse_model(TableReader& top, Scene& s) {
       if (!str) throw SceneError(where + " must be a string, got " + type_name(n) + line_of(n));
       const unsigned b = effect_bit(str->get());
       if (b == 0)
-        throw SceneError(where + " = \"" + str->get() + "\" is not an effect (valid: " + effect_names(kAllEffects) + ")" +
-                         line_of(n));
+        throw SceneError(where + " = \"" + str->get() + "\" is not an effect (valid: " + effect_names(kAllEffects) +
+                         ")" + line_of(n));
       if (!(b & entry.supported_effects))
         throw SceneError(where + " = \"" + str->get() + "\" is not implemented by model " + entry.name +
                          " (valid: " + effect_names(entry.supported_effects) + ")" + line_of(n));
@@ -337,7 +349,8 @@ std::vector<MotionSegment> parse_motion(TableReader& r, const std::string& path,
   for (std::size_t m = 0; m < motion->size(); ++m) {
     const std::string mp = path + ".motion[" + std::to_string(m) + "]";
     const toml::node& mn = *motion->get(m);
-    if (!mn.is_table()) throw SceneError(mp + " must be a table {duration = .., velocity = [..]}, got " + type_name(mn) + line_of(mn));
+    if (!mn.is_table())
+      throw SceneError(mp + " must be a table {duration = .., velocity = [..]}, got " + type_name(mn) + line_of(mn));
     TableReader sr(*mn.as_table(), mp);
     MotionSegment seg;
     seg.duration = sr.number("duration", 0.0, Bound::open, kInf, Bound::open, std::nullopt);
@@ -391,7 +404,8 @@ void parse_particles(TableReader& top, Scene& s) {
     fill.box_max = f.vec3("box_max", std::nullopt, &kCoordinate);
     fill.count = f.integer("count", 0, 100000000, std::nullopt);
     fill.radius_min = f.number("radius_min", kRadius, std::nullopt);
-    fill.radius_max = f.number("radius_max", fill.radius_min, Bound::closed, kRadius.hi, Bound::closed, fill.radius_min);
+    fill.radius_max =
+        f.number("radius_max", fill.radius_min, Bound::closed, kRadius.hi, Bound::closed, fill.radius_min);
     fill.material = material_of(f, "material", s);
     fill.seed = static_cast<std::uint64_t>(f.integer("seed", 0, std::numeric_limits<std::int64_t>::max(), 1));
     fill.velocity = f.vec3("velocity", Vec3d{0, 0, 0}, &kSpeed);
@@ -402,12 +416,15 @@ void parse_particles(TableReader& top, Scene& s) {
     LatticeSpec& lat = s.lattice;
     lat.enabled = true;
     const std::string type = l.string("type").value_or("fcc");
-    if (type != "fcc") throw SceneError("particles.lattice.type = \"" + type + "\" is not valid (valid: \"fcc\")" + line_of(*lt));
+    if (type != "fcc")
+      throw SceneError("particles.lattice.type = \"" + type + "\" is not valid (valid: \"fcc\")" + line_of(*lt));
     lat.a = l.number("a", 0.0, Bound::open, kCoordinate.hi, Bound::closed, std::nullopt);
     const toml::array* cells = l.array("cells");
     if (!cells || cells->size() != 3)
-      throw SceneError(std::string("particles.lattice.cells ") + (cells ? "must be an array of three integers [nx, ny, nz]"
-                                                                        : "is missing (required; three integers [nx, ny, nz] >= 1)") + line_of(*lt));
+      throw SceneError(std::string("particles.lattice.cells ") +
+                       (cells ? "must be an array of three integers [nx, ny, nz]"
+                              : "is missing (required; three integers [nx, ny, nz] >= 1)") +
+                       line_of(*lt));
     for (int d = 0; d < 3; ++d) {
       const toml::node& n = *cells->get(d);
       const std::string w = "particles.lattice.cells[" + std::to_string(d) + "]";
@@ -454,7 +471,9 @@ void parse_box(TableReader& top, Scene& s) {
     for (int d = 0; d < 3; ++d) {
       const toml::node& n = *per->get(d);
       auto v = n.as_boolean();
-      if (!v) throw SceneError("box.periodic[" + std::to_string(d) + "] must be true or false, got " + type_name(n) + line_of(n));
+      if (!v)
+        throw SceneError("box.periodic[" + std::to_string(d) + "] must be true or false, got " + type_name(n) +
+                         line_of(n));
       b.periodic[d] = v->get();
     }
   }
@@ -527,7 +546,8 @@ void parse_run(TableReader& top, Scene& s) {
   s.run.deterministic = r.boolean("deterministic", false);
   s.run.snapshot_format = r.string("snapshot_format").value_or("none");
   if (s.run.snapshot_format != "none" && s.run.snapshot_format != "vtp")
-    throw SceneError("run.snapshot_format = \"" + s.run.snapshot_format + "\" is not a snapshot format (valid: \"none\", \"vtp\")");
+    throw SceneError("run.snapshot_format = \"" + s.run.snapshot_format +
+                     "\" is not a snapshot format (valid: \"none\", \"vtp\")");
   s.run.initial_history = r.string("initial_history").value_or("from_overlaps");
   if (s.run.initial_history != "from_overlaps" && s.run.initial_history != "zero")
     throw SceneError("run.initial_history = \"" + s.run.initial_history +
@@ -545,7 +565,8 @@ void check_walls_in_box(const Scene& s) {
       if (s.box.periodic[d] && s.walls[k].normal[d] != 0.0) {
         const Vec3d& n = s.walls[k].normal;
         std::ostringstream m;
-        m << "walls[" << k << "].normal = [" << n[0] << ", " << n[1] << ", " << n[2] << "] (normalised) has a component "
+        m << "walls[" << k << "].normal = [" << n[0] << ", " << n[1] << ", " << n[2]
+          << "] (normalised) has a component "
           << "along the periodic axis " << axis[d] << " (box.periodic[" << d << "] = true); valid: normal[" << d
           << "] = 0 (walls only on non-periodic axes)";
         throw SceneError(m.str());
@@ -584,7 +605,8 @@ void finish_scene(Scene& s) {
   if (s.lattice.enabled) pm.insert(s.lattice.material);
   for (const auto& w : s.walls) wm.insert(w.material);
   if (pm.empty() && !s.fill.enabled)
-    throw SceneError("particles: no particles (give [[particles.list]] entries, [particles.fill] or [particles.lattice])");
+    throw SceneError(
+        "particles: no particles (give [[particles.list]] entries, [particles.fill] or [particles.lattice])");
   for (int m : pm) {
     const Material& mat = s.materials[m];
     if (!(mat.density > 0.0) || !std::isfinite(mat.density))
@@ -618,8 +640,8 @@ void finish_scene(Scene& s) {
   if (s.run.output_interval == 0) s.run.output_interval = std::max<std::int64_t>(1, s.run.steps / 100);
 
   const ModelEntry& entry = find_model(s.model.name);
-  s.model.derived_effects = derive_effects(s.materials, std::vector<int>(pm.begin(), pm.end()),
-                                           std::vector<int>(wm.begin(), wm.end()));
+  s.model.derived_effects =
+      derive_effects(s.materials, std::vector<int>(pm.begin(), pm.end()), std::vector<int>(wm.begin(), wm.end()));
   if (!s.model.effects_overridden) {
     unsigned bits = s.model.derived_effects | entry.implied_effects;
     if (bits & kPlasticity) bits |= entry.implied_with_plasticity;
@@ -637,9 +659,7 @@ void finish_scene(Scene& s) {
   if (entry.scene_check) {
     try {
       range = entry.scene_check(s);
-    } catch (const SceneError&) {
-      throw;
-    } catch (const ParameterError& e) {
+    } catch (const SceneError&) { throw; } catch (const ParameterError& e) {
       throw SceneError(std::string("[model] ") + e.what());
     }
   }
@@ -679,7 +699,8 @@ Scene parse_table(const toml::table& root, const std::string& source) {
 
 [[noreturn]] void rethrow_syntax(const toml::parse_error& e, const std::string& source) {
   std::ostringstream m;
-  m << source << ":" << e.source().begin.line << ":" << e.source().begin.column << ": TOML syntax error: " << e.description();
+  m << source << ":" << e.source().begin.line << ":" << e.source().begin.column
+    << ": TOML syntax error: " << e.description();
   throw SceneError(m.str());
 }
 
@@ -736,17 +757,13 @@ bool Scene::any_driven() const {
 Scene parse_scene_file(const std::string& path) {
   try {
     return parse_table(toml::parse_file(path), path);
-  } catch (const toml::parse_error& e) {
-    rethrow_syntax(e, path);
-  }
+  } catch (const toml::parse_error& e) { rethrow_syntax(e, path); }
 }
 
 Scene parse_scene_string(const std::string& text, const std::string& source) {
   try {
     return parse_table(toml::parse(text, source), source);
-  } catch (const toml::parse_error& e) {
-    rethrow_syntax(e, source);
-  }
+  } catch (const toml::parse_error& e) { rethrow_syntax(e, source); }
 }
 
 }  // namespace driver

@@ -43,13 +43,13 @@ struct ParticleSpec {
   // Driven particles only: piecewise-constant velocity (then `velocity` is not given); still
   // after the last segment. Empty: the constant `velocity`.
   std::vector<MotionSegment> motion;
-  std::string origin;   // "particles.list[3]" or "particles.fill": for messages
+  std::string origin;  // "particles.list[3]" or "particles.fill": for messages
 };
 
 struct WallSpec {
-  std::string name;      // optional; "wall<k>" if absent
-  Vec3d point{0, 0, 0};  // a point on the plane
-  Vec3d normal{0, 0, 1}; // unit normal into the domain (normalised on input)
+  std::string name;       // optional; "wall<k>" if absent
+  Vec3d point{0, 0, 0};   // a point on the plane
+  Vec3d normal{0, 0, 1};  // unit normal into the domain (normalised on input)
   int material = 0;
   // Either a constant velocity forever (segments empty), or the segments in order; after the
   // last segment the wall stands still.
@@ -76,13 +76,13 @@ struct FillSpec {
 // per coordinate, drawn in that order per atom from one seeded stream.
 struct LatticeSpec {
   bool enabled = false;
-  double a = 0;                        // cubic cell edge [m]
+  double a = 0;  // cubic cell edge [m]
   std::array<std::int64_t, 3> cells{0, 0, 0};
-  Vec3d origin{0, 0, 0};               // corner of cell (0,0,0) [m]
+  Vec3d origin{0, 0, 0};  // corner of cell (0,0,0) [m]
   double radius_min = 0, radius_max = 0;
   int material = 0;
   std::uint64_t seed = 1;
-  double jitter = 0;                   // [m]
+  double jitter = 0;  // [m]
   Vec3d velocity{0, 0, 0};
   std::int64_t count() const { return 4 * cells[0] * cells[1] * cells[2]; }
 };
@@ -92,10 +92,10 @@ struct LatticeSpec {
 // periodic edges about the box centre, linearly in the step number up to `deform_steps`.
 struct BoxSpec {
   bool enabled = false;
-  Vec3d lo{0, 0, 0}, hi{0, 0, 0};      // [m]
+  Vec3d lo{0, 0, 0}, hi{0, 0, 0};  // [m]
   std::array<bool, 3> periodic{false, false, false};
   bool deform = false;
-  Vec3d scale{1, 1, 1};                // final edge / initial edge (1 on axes not deformed)
+  Vec3d scale{1, 1, 1};  // final edge / initial edge (1 on axes not deformed)
   std::int64_t deform_steps = 0;
 
   bool any_periodic() const { return periodic[0] || periodic[1] || periodic[2]; }
@@ -116,20 +116,20 @@ struct ModelSpec {
   std::string name = "hertz_mindlin";
   std::map<std::string, double> params;  // model-specific keys (model_registry.cpp lists them)
   bool effects_overridden = false;
-  unsigned derived_effects = 0;  // from the materials (docs/design.md section 5)
-  unsigned effects = 0;          // the active set: derived (masked by the model) or the override
+  unsigned derived_effects = 0;    // from the materials (docs/design.md section 5)
+  unsigned effects = 0;            // the active set: derived (masked by the model) or the override
   std::vector<std::string> notes;  // e.g. effects the model ignores
 };
 
 struct RunSpec {
   double dt = 0;
   std::int64_t steps = 0;
-  std::int64_t output_interval = 0;  // 0: steps / 100 (at least 1)
-  double skin = -1;                  // < 0: 0.2 x the smallest radius (see finish_scene)
-  bool contact_output = false;       // contacts.csv at every output step
-  bool particle_output = false;      // particles.csv at every output step
-  bool spatial_sort = false;         // reorder the particle arrays in cell order at every rebuild
-  bool deterministic = false;        // the kernels' deterministic mode: same bits on any thread count
+  std::int64_t output_interval = 0;      // 0: steps / 100 (at least 1)
+  double skin = -1;                      // < 0: 0.2 x the smallest radius (see finish_scene)
+  bool contact_output = false;           // contacts.csv at every output step
+  bool particle_output = false;          // particles.csv at every output step
+  bool spatial_sort = false;             // reorder the particle arrays in cell order at every rebuild
+  bool deterministic = false;            // the kernels' deterministic mode: same bits on any thread count
   std::string snapshot_format = "none";  // "vtp": ParaView/OVITO snapshots at every output step
   // "from_overlaps": contacts overlapping at step 0 get the history of a quasi-static load to
   // their overlap (compute/history_from_overlaps.hpp); "zero": fresh history.
@@ -137,7 +137,7 @@ struct RunSpec {
 };
 
 struct Scene {
-  std::string source;          // file name or "<string>"
+  std::string source;  // file name or "<string>"
   std::string description;
   std::vector<Material> materials;
   std::map<std::string, int> material_index;

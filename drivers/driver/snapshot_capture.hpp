@@ -21,14 +21,25 @@ ParticleSnapshot capture_snapshot(const Model& model, const Particles<T, Device>
   ParticleSnapshot s;
   s.step = step;
   s.time = time;
-  s.x.resize(3 * n); s.v.resize(3 * n); s.omega.resize(3 * n); s.force.resize(3 * n);
-  s.radius.resize(n); s.radius0.resize(n); s.id.resize(n); s.material.resize(n);
+  s.x.resize(3 * n);
+  s.v.resize(3 * n);
+  s.omega.resize(3 * n);
+  s.force.resize(3 * n);
+  s.radius.resize(n);
+  s.radius0.resize(n);
+  s.id.resize(n);
+  s.material.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     for (int d = 0; d < 3; ++d) {
-      s.x[3 * i + d] = x(i, d); s.v[3 * i + d] = v(i, d);
-      s.omega[3 * i + d] = w(i, d); s.force[3 * i + d] = f(i, d);
+      s.x[3 * i + d] = x(i, d);
+      s.v[3 * i + d] = v(i, d);
+      s.omega[3 * i + d] = w(i, d);
+      s.force[3 * i + d] = f(i, d);
     }
-    s.radius[i] = R(i); s.radius0[i] = R0(i); s.id[i] = gid(i); s.material[i] = mat(i);
+    s.radius[i] = R(i);
+    s.radius0[i] = R0(i);
+    s.id[i] = gid(i);
+    s.material[i] = mat(i);
   }
   if (vol.extent(0) == n) {
     std::vector<double> V(n);

@@ -35,8 +35,8 @@ std::string vtp_text(const ParticleSnapshot& s) {
     << "    <Piece NumberOfPoints=\"" << n << "\" NumberOfVerts=\"" << n
     << "\" NumberOfLines=\"0\" NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n"
     << "      <PointData Scalars=\"radius\" Vectors=\"velocity\">\n";
-  data_array(o, "Float64", "radius", 1, s.radius);           // m
-  data_array(o, "Float64", "radius0", 1, s.radius0);         // m
+  data_array(o, "Float64", "radius", 1, s.radius);    // m
+  data_array(o, "Float64", "radius0", 1, s.radius0);  // m
   data_array(o, "Int64", "id", 1, s.id);
   data_array(o, "Int32", "material", 1, s.material);
   data_array(o, "Float64", "velocity", 3, s.v);              // m/s
@@ -49,7 +49,10 @@ std::string vtp_text(const ParticleSnapshot& s) {
   o << "      </Points>\n"
     << "      <Verts>\n";
   std::vector<std::int64_t> conn(n), offs(n);
-  for (std::size_t k = 0; k < n; ++k) { conn[k] = static_cast<std::int64_t>(k); offs[k] = static_cast<std::int64_t>(k + 1); }
+  for (std::size_t k = 0; k < n; ++k) {
+    conn[k] = static_cast<std::int64_t>(k);
+    offs[k] = static_cast<std::int64_t>(k + 1);
+  }
   data_array(o, "Int64", "connectivity", 1, conn);
   data_array(o, "Int64", "offsets", 1, offs);
   o << "      </Verts>\n"
@@ -59,8 +62,7 @@ std::string vtp_text(const ParticleSnapshot& s) {
   return o.str();
 }
 
-SnapshotWriter::SnapshotWriter(const std::string& out_dir)
-    : dir_(out_dir), pvd_path_(out_dir + "/particles.pvd") {
+SnapshotWriter::SnapshotWriter(const std::string& out_dir) : dir_(out_dir), pvd_path_(out_dir + "/particles.pvd") {
   std::error_code ec;
   std::filesystem::create_directories(out_dir + "/snapshots", ec);
   if (ec) throw std::runtime_error("cannot create '" + out_dir + "/snapshots': " + ec.message());

@@ -33,17 +33,19 @@ class Permuter {
     using value_type = typename V::non_const_value_type;
     const auto perm = perm_;
     if constexpr (V::rank == 1) {
-      Kokkos::View<value_type*, Device> tmp(Kokkos::view_alloc(Kokkos::WithoutInitializing, "epac::driver::sort_tmp"), n_);
-      Kokkos::parallel_for("epac::driver::sort_gather", Kokkos::RangePolicy<exec>(0, n_),
-                           KOKKOS_LAMBDA(int k) { tmp(k) = v(perm(k)); });
+      Kokkos::View<value_type*, Device> tmp(Kokkos::view_alloc(Kokkos::WithoutInitializing, "epac::driver::sort_tmp"),
+                                            n_);
+      Kokkos::parallel_for(
+          "epac::driver::sort_gather", Kokkos::RangePolicy<exec>(0, n_), KOKKOS_LAMBDA(int k) { tmp(k) = v(perm(k)); });
       Kokkos::deep_copy(v, tmp);
     } else {
       static_assert(V::rank == 2, "per-particle views are n or n x 3");
       Kokkos::View<value_type* [3], Kokkos::LayoutLeft, Device> tmp(
           Kokkos::view_alloc(Kokkos::WithoutInitializing, "epac::driver::sort_tmp3"), n_);
-      Kokkos::parallel_for("epac::driver::sort_gather3", Kokkos::RangePolicy<exec>(0, n_), KOKKOS_LAMBDA(int k) {
-        for (int d = 0; d < 3; ++d) tmp(k, d) = v(perm(k), d);
-      });
+      Kokkos::parallel_for(
+          "epac::driver::sort_gather3", Kokkos::RangePolicy<exec>(0, n_), KOKKOS_LAMBDA(int k) {
+            for (int d = 0; d < 3; ++d) tmp(k, d) = v(perm(k), d);
+          });
       Kokkos::deep_copy(v, tmp);
     }
   }
@@ -67,8 +69,8 @@ class Permuter {
   Kokkos::View<int*, Device> inverse() const {
     Kokkos::View<int*, Device> inv(Kokkos::view_alloc(Kokkos::WithoutInitializing, "epac::driver::sort_inverse"), n_);
     const auto perm = perm_;
-    Kokkos::parallel_for("epac::driver::sort_inverse", Kokkos::RangePolicy<exec>(0, n_),
-                         KOKKOS_LAMBDA(int k) { inv(perm(k)) = k; });
+    Kokkos::parallel_for(
+        "epac::driver::sort_inverse", Kokkos::RangePolicy<exec>(0, n_), KOKKOS_LAMBDA(int k) { inv(perm(k)) = k; });
     return inv;
   }
 

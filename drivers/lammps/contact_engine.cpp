@@ -20,7 +20,9 @@ namespace {
 template <class Model>
 void bind_model(Model&, const Particles<double>&) {}
 template <class Eff>
-void bind_model(Mdr<double, Eff>& m, const Particles<double>& p) { m.bind(p); }
+void bind_model(Mdr<double, Eff>& m, const Particles<double>& p) {
+  m.bind(p);
+}
 
 // MDR growth hooks (no-ops for the other laws and for MDR compiled without growth)
 template <class Model>
@@ -107,10 +109,14 @@ std::unique_ptr<ContactEngine> dispatch(unsigned want, const std::vector<Materia
   }
 }
 
-template <class Eff> using HM = HertzMindlin<double, Eff>;
-template <class Eff> using JKR = Jkr<double, Eff>;
-template <class Eff> using NAN22 = Nan2022<double, Eff>;
-template <class Eff> using MDR = Mdr<double, Eff>;
+template <class Eff>
+using HM = HertzMindlin<double, Eff>;
+template <class Eff>
+using JKR = Jkr<double, Eff>;
+template <class Eff>
+using NAN22 = Nan2022<double, Eff>;
+template <class Eff>
+using MDR = Mdr<double, Eff>;
 
 // The effects the coefficients call for (docs/design.md section 5).
 unsigned effects_of(const std::vector<Material>& mats) {
@@ -131,11 +137,11 @@ std::unique_ptr<ContactEngine> make_engine(Law law, const std::vector<Material>&
   if (radius_growth && law != Law::mdr)
     throw std::invalid_argument("epac plugin: radius growth is an MDR effect (fix epac/mdr needs pair_style epac/mdr)");
   if ((mdr.pair_split != 0 || mdr.delta_max != 0 || mdr.damping != 0 || mdr.friction != 0 || mdr.yield_onset != 0 ||
-       mdr.surface_energy_share != 0 || mdr.adhesive_radius != 0 ||
-       mdr.release != 0) &&
+       mdr.surface_energy_share != 0 || mdr.adhesive_radius != 0 || mdr.release != 0) &&
       law != Law::mdr)
-    throw std::invalid_argument("epac plugin: pair_split, delta_max, damping, friction, yield_onset, "
-                                "surface_energy_share, adhesive_radius and release are MDR options");
+    throw std::invalid_argument(
+        "epac plugin: pair_split, delta_max, damping, friction, yield_onset, "
+        "surface_energy_share, adhesive_radius and release are MDR options");
   const unsigned e = effects_of(mats);
   MdrOptions mdr_opt;
   mdr_opt.pair_split = static_cast<MdrPairSplit>(mdr.pair_split);
@@ -149,8 +155,8 @@ std::unique_ptr<ContactEngine> make_engine(Law law, const std::vector<Material>&
   mdr_opt.release = static_cast<MdrRelease>(mdr.release);
   switch (law) {
     case Law::hertz_mindlin:
-      return dispatch<HM, kFriction | kDamping>(e & (kFriction | kDamping), mats,
-                                                [&](auto* m) { return std::remove_pointer_t<decltype(m)>::create(mats); });
+      return dispatch<HM, kFriction | kDamping>(
+          e & (kFriction | kDamping), mats, [&](auto* m) { return std::remove_pointer_t<decltype(m)>::create(mats); });
     case Law::jkr:
       return dispatch<JKR, kAdhesion | kFriction | kDamping>(
           e & (kAdhesion | kFriction | kDamping), mats,
@@ -166,8 +172,9 @@ std::unique_ptr<ContactEngine> make_engine(Law law, const std::vector<Material>&
       // exact (radius_growth() then reports false and the host skips the update).
       if (radius_growth && (e & kPlasticity))
         return dispatch<MDR, kAdhesion | kPlasticity | kFriction | kDamping | kRadiusGrowth,
-                        kPlasticity | kRadiusGrowth>(
-            e | kRadiusGrowth, mats, [&](auto* m) { return std::remove_pointer_t<decltype(m)>::create(mats, mdr_opt); });
+                        kPlasticity | kRadiusGrowth>(e | kRadiusGrowth, mats, [&](auto* m) {
+          return std::remove_pointer_t<decltype(m)>::create(mats, mdr_opt);
+        });
       return dispatch<MDR, kAdhesion | kPlasticity | kFriction | kDamping>(
           e, mats, [&](auto* m) { return std::remove_pointer_t<decltype(m)>::create(mats, mdr_opt); });
   }

@@ -72,8 +72,8 @@ struct MdrChoices {
       adhesive_radius = 0, release = 0;
   double kt = 0.0;
 };
-std::unique_ptr<ContactEngine> make_engine(Law law, const std::vector<Material>& materials,
-                                           bool radius_growth = false, const MdrChoices& mdr = {});
+std::unique_ptr<ContactEngine> make_engine(Law law, const std::vector<Material>& materials, bool radius_growth = false,
+                                           const MdrChoices& mdr = {});
 
 }  // namespace lammps
 }  // namespace epac

@@ -19,20 +19,20 @@ namespace LAMMPS_NS {
 
 class FixEpacMdr : public Fix {
  public:
-  FixEpacMdr(class LAMMPS *, int, char **);
+  FixEpacMdr(class LAMMPS*, int, char**);
   ~FixEpacMdr() override;
   int setmask() override;
   void post_constructor() override;
   void init() override;
-  int pack_forward_comm(int, int *, double *, int, int *) override;
-  void unpack_forward_comm(int, int, double *) override;
+  int pack_forward_comm(int, int*, double*, int, int*) override;
+  void unpack_forward_comm(int, int, double*) override;
 
   // Sets R_o = radius and V = 4/3 pi R_o^3 for atoms (local and ghost) whose R_o is 0 (new).
   void initialize_new_atoms();
-  double *initial_radius() const;  // R_o per atom (local and ghost)
-  double *volume() const;          // V of MDR (39) per atom
+  double* initial_radius() const;  // R_o per atom (local and ghost)
+  double* volume() const;          // V of MDR (39) per atom
 
-  static constexpr const char *state_id = "EPAC_MDR_PARTICLE_STATE";
+  static constexpr const char* state_id = "EPAC_MDR_PARTICLE_STATE";
 
  private:
   int index_ro_ = -1, index_v_ = -1;

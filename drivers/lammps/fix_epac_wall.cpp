@@ -17,11 +17,12 @@
 
 using namespace LAMMPS_NS;
 
-FixEpacWall::FixEpacWall(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg)
-{
+FixEpacWall::FixEpacWall(LAMMPS* lmp, int narg, char** arg) : Fix(lmp, narg, arg) {
   if (narg < 5 || std::strcmp(arg[3], "region") != 0)
-    error->all(FLERR, "Illegal fix {} command: use fix ID group epac/wall region REGION-ID [mu MU] [gamma G] "
-               "[e E] [contacts]", style);
+    error->all(FLERR,
+               "Illegal fix {} command: use fix ID group epac/wall region REGION-ID [mu MU] [gamma G] "
+               "[e E] [contacts]",
+               style);
   if (!atom->radius_flag || !atom->omega_flag)
     error->all(FLERR, "Fix epac/wall requires atom attributes radius and omega (atom_style sphere)");
   idregion_ = utils::strdup(arg[4]);
@@ -33,7 +34,7 @@ FixEpacWall::FixEpacWall(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg
       output_ = true;
       continue;
     }
-    double *value = std::strcmp(arg[k], "mu") == 0      ? &mu_
+    double* value = std::strcmp(arg[k], "mu") == 0      ? &mu_
                     : std::strcmp(arg[k], "gamma") == 0 ? &gamma_
                     : std::strcmp(arg[k], "e") == 0     ? &e_
                                                         : nullptr;
@@ -62,8 +63,7 @@ FixEpacWall::FixEpacWall(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg
   slot_.resize(tmax_);
 }
 
-FixEpacWall::~FixEpacWall()
-{
+FixEpacWall::~FixEpacWall() {
   if (copymode) return;
   atom->delete_callback(id, Atom::GROW);
   atom->delete_callback(id, Atom::RESTART);
@@ -74,12 +74,12 @@ FixEpacWall::~FixEpacWall()
   memory->destroy(array_atom);
 }
 
-epac::Material FixEpacWall::wall_material(const epac::Material &particle, int type) const
-{
+epac::Material FixEpacWall::wall_material(const epac::Material& particle, int type) const {
   epac::Material w = particle;
   w.rigid = true;
   w.name = std::string("fix ") + id + " wall, type " + std::to_string(type);
-  w.own_surface_properties = !std::isnan(mu_) || !std::isnan(gamma_) || !std::isnan(e_);  // the unset ones stay the particle's
+  w.own_surface_properties =
+      !std::isnan(mu_) || !std::isnan(gamma_) || !std::isnan(e_);  // the unset ones stay the particle's
   if (!std::isnan(mu_)) w.friction = mu_;
   if (!std::isnan(gamma_)) w.surface_energy = gamma_;
   if (!std::isnan(e_)) w.restitution = e_;
@@ -89,8 +89,7 @@ epac::Material FixEpacWall::wall_material(const epac::Material &particle, int ty
 // No per-step hook: pair styles epac/* evaluate the wall contacts in their force pass.
 int FixEpacWall::setmask() { return 0; }
 
-void FixEpacWall::init()
-{
+void FixEpacWall::init() {
   region_ = domain->get_region_by_id(idregion_);
   if (!region_) error->all(FLERR, "Fix epac/wall: region {} does not exist", idregion_);
   if (region_->tmax != tmax_)
@@ -101,8 +100,7 @@ void FixEpacWall::init()
 }
 
 // fix_wall_gran_region.cpp's update_contacts: slot_[ic] = history slot of region contact ic.
-void FixEpacWall::update_slots(int i, int nc)
-{
+void FixEpacWall::update_slots(int i, int nc) {
   int iold = 0;
   while (iold < ncontact_[i]) {  // drop contacts no longer touched (copy the last over them)
     int m = 0;
@@ -132,25 +130,25 @@ void FixEpacWall::update_slots(int i, int nc)
   }
 }
 
-void FixEpacWall::find_contacts(const double *range, std::vector<Contact> &out)
-{
+void FixEpacWall::find_contacts(const double* range, std::vector<Contact>& out) {
   const bool moving = region_->dynamic_check() != 0;
   if (moving) {
     region_->prematch();
     region_->set_velocity();  // once per step (the region keeps the step it was set at)
   }
-  double **x = atom->x;
-  double *radius = atom->radius;
+  double** x = atom->x;
+  double* radius = atom->radius;
   int *mask = atom->mask, *type = atom->type;
   const int nlocal = atom->nlocal;
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
     if (!region_->match(x[i][0], x[i][1], x[i][2])) continue;  // outside: no force, history kept (as LAMMPS)
     const int nc = region_->surface(x[i][0], x[i][1], x[i][2], radius[i] + range[type[i]]);
-    if (nc > tmax_) error->one(FLERR, "Fix epac/wall: atom touches {} surfaces of region {} (at most {})", nc, idregion_, tmax_);
+    if (nc > tmax_)
+      error->one(FLERR, "Fix epac/wall: atom touches {} surfaces of region {} (at most {})", nc, idregion_, tmax_);
     update_slots(i, nc);
     for (int ic = 0; ic < nc; ic++) {
-      const auto &rc = region_->contact[ic];
+      const auto& rc = region_->contact[ic];
       if (!(rc.r > 0.0)) continue;  // centre on the surface: no normal (the law would see delta = R)
       Contact c;
       c.atom = i;
@@ -160,24 +158,24 @@ void FixEpacWall::find_contacts(const double *range, std::vector<Contact> &out)
         c.normal[d] = del[d] / rc.r;
         c.point[d] = x[i][d] - del[d];
       }
-      if (moving) region_->velocity_contact(c.velocity, x[i], ic);
-      else c.velocity[0] = c.velocity[1] = c.velocity[2] = 0.0;
+      if (moving)
+        region_->velocity_contact(c.velocity, x[i], ic);
+      else
+        c.velocity[0] = c.velocity[1] = c.velocity[2] = 0.0;
       out.push_back(c);
     }
   }
 }
 
-void FixEpacWall::clear_contact_output()
-{
+void FixEpacWall::clear_contact_output() {
   if (!output_) return;
   for (int i = 0; i < atom->nlocal; i++)
     for (int m = 0; m < size_peratom_cols; m++) array_atom[i][m] = 0.0;
 }
 
-void FixEpacWall::record_contact(const Contact &c, const double *force, double radius)
-{
+void FixEpacWall::record_contact(const Contact& c, const double* force, double radius) {
   if (!output_) return;
-  double *a = array_atom[c.atom];
+  double* a = array_atom[c.atom];
   a[0] = 1.0;
   for (int d = 0; d < 3; d++) {
     a[1 + d] += force[d];  // an atom touching two surfaces of the region: the sum
@@ -186,24 +184,21 @@ void FixEpacWall::record_contact(const Contact &c, const double *force, double r
   a[7] = radius;
 }
 
-double FixEpacWall::memory_usage()
-{
+double FixEpacWall::memory_usage() {
   const double nmax = atom->nmax;
   double bytes = nmax * sizeof(int) + nmax * tmax_ * sizeof(int) + nmax * tmax_ * kMaxHistory * sizeof(double);
   if (output_) bytes += nmax * size_peratom_cols * sizeof(double);
   return bytes;
 }
 
-void FixEpacWall::grow_arrays(int nmax)
-{
+void FixEpacWall::grow_arrays(int nmax) {
   memory->grow(ncontact_, nmax, "epac/wall:ncontact");
   memory->grow(walls_, nmax, tmax_, "epac/wall:walls");
   memory->grow(history_, nmax, tmax_, kMaxHistory, "epac/wall:history");
   if (output_) memory->grow(array_atom, nmax, size_peratom_cols, "epac/wall:array_atom");
 }
 
-void FixEpacWall::copy_arrays(int i, int j, int)
-{
+void FixEpacWall::copy_arrays(int i, int j, int) {
   ncontact_[j] = ncontact_[i];
   for (int k = 0; k < ncontact_[i]; k++) {
     walls_[j][k] = walls_[i][k];
@@ -213,15 +208,13 @@ void FixEpacWall::copy_arrays(int i, int j, int)
     for (int m = 0; m < size_peratom_cols; m++) array_atom[j][m] = array_atom[i][m];
 }
 
-void FixEpacWall::set_arrays(int i)
-{
+void FixEpacWall::set_arrays(int i) {
   ncontact_[i] = 0;
   if (output_)
     for (int m = 0; m < size_peratom_cols; m++) array_atom[i][m] = 0.0;
 }
 
-int FixEpacWall::pack_exchange(int i, double *buf)
-{
+int FixEpacWall::pack_exchange(int i, double* buf) {
   int n = 0;
   buf[n++] = ubuf(ncontact_[i]).d;
   for (int k = 0; k < ncontact_[i]; k++) {
@@ -233,8 +226,7 @@ int FixEpacWall::pack_exchange(int i, double *buf)
   return n;
 }
 
-int FixEpacWall::unpack_exchange(int nlocal, double *buf)
-{
+int FixEpacWall::unpack_exchange(int nlocal, double* buf) {
   int n = 0;
   ncontact_[nlocal] = static_cast<int>(ubuf(buf[n++]).i);
   for (int k = 0; k < ncontact_[nlocal]; k++) {
@@ -246,8 +238,7 @@ int FixEpacWall::unpack_exchange(int nlocal, double *buf)
   return n;
 }
 
-int FixEpacWall::pack_restart(int i, double *buf)
-{
+int FixEpacWall::pack_restart(int i, double* buf) {
   int n = 1;  // buf[0]: this fix's count, as every per-atom restart fix packs it
   buf[n++] = ubuf(ncontact_[i]).d;
   for (int k = 0; k < ncontact_[i]; k++) {
@@ -258,9 +249,8 @@ int FixEpacWall::pack_restart(int i, double *buf)
   return n;
 }
 
-void FixEpacWall::unpack_restart(int nlocal, int nth)
-{
-  double **extra = atom->extra;
+void FixEpacWall::unpack_restart(int nlocal, int nth) {
+  double** extra = atom->extra;
   int m = 0;
   for (int k = 0; k < nth; k++) m += static_cast<int>(extra[nlocal][m]);
   m++;

@@ -30,51 +30,51 @@ class FixEpacWall : public Fix {
 
   // One touching surface of one local atom in this pass.
   struct Contact {
-    int atom;              // local atom index
-    double *history;       // its kMaxHistory slots
-    double point[3];       // nearest surface point
-    double normal[3];      // unit normal from the wall towards the atom
-    double velocity[3];    // the surface's velocity at that point
+    int atom;            // local atom index
+    double* history;     // its kMaxHistory slots
+    double point[3];     // nearest surface point
+    double normal[3];    // unit normal from the wall towards the atom
+    double velocity[3];  // the surface's velocity at that point
   };
 
-  FixEpacWall(class LAMMPS *, int, char **);
+  FixEpacWall(class LAMMPS*, int, char**);
   ~FixEpacWall() override;
   int setmask() override;
   void init() override;
   // The wall's material against particles of `type` with material `particle`: rigid, with the
   // particle's properties where this fix sets none.
-  epac::Material wall_material(const epac::Material &particle, int type) const;
+  epac::Material wall_material(const epac::Material& particle, int type) const;
 
   // The pass's contacts: every local atom of the group within radius + range[type] of the surface
   // (range: the law's adhesive reach per atom type, index 1..ntypes). Keeps the history of
   // surfaces still touched, zeroes it for new ones, forgets the ones left. Call once per pass.
-  void find_contacts(const double *range, std::vector<Contact> &out);
+  void find_contacts(const double* range, std::vector<Contact>& out);
   // With `contacts`: clears the per-atom array (call before recording a pass's forces).
   void clear_contact_output();
-  void record_contact(const Contact &c, const double *force, double radius);
+  void record_contact(const Contact& c, const double* force, double radius);
 
   double memory_usage() override;
   void grow_arrays(int) override;
   void copy_arrays(int, int, int) override;
   void set_arrays(int) override;
-  int pack_exchange(int, double *) override;
-  int unpack_exchange(int, double *) override;
-  int pack_restart(int, double *) override;
+  int pack_exchange(int, double*) override;
+  int unpack_exchange(int, double*) override;
+  int pack_restart(int, double*) override;
   void unpack_restart(int, int) override;
   int size_restart(int) override;
   int maxsize_restart() override;
 
  private:
-  char *idregion_ = nullptr;
-  class Region *region_ = nullptr;
-  int tmax_ = 1;               // most surfaces of the region one atom can touch
-  int *ncontact_ = nullptr;    // per atom: touching surfaces stored
-  int **walls_ = nullptr;      // per atom: the region's surface ids (iwall) of those contacts
-  double ***history_ = nullptr;  // per atom, per contact: kMaxHistory fields
+  char* idregion_ = nullptr;
+  class Region* region_ = nullptr;
+  int tmax_ = 1;                 // most surfaces of the region one atom can touch
+  int* ncontact_ = nullptr;      // per atom: touching surfaces stored
+  int** walls_ = nullptr;        // per atom: the region's surface ids (iwall) of those contacts
+  double*** history_ = nullptr;  // per atom, per contact: kMaxHistory fields
   bool output_ = false;
   // the wall's own values; NaN: the particle's
   double mu_ = std::numeric_limits<double>::quiet_NaN(), gamma_ = mu_, e_ = mu_;
-  std::vector<int> slot_;      // scratch: history slot of each current contact
+  std::vector<int> slot_;  // scratch: history slot of each current contact
   void update_slots(int i, int nc);
 };
 

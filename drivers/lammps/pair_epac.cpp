@@ -37,12 +37,11 @@ using namespace LAMMPS_NS;
 using epac::lammps::Law;
 
 namespace {
-const char *dummy_id = "NEIGH_HISTORY_EPAC_DUMMY";
-const char *history_id = "NEIGH_HISTORY_EPAC";
+const char* dummy_id = "NEIGH_HISTORY_EPAC_DUMMY";
+const char* history_id = "NEIGH_HISTORY_EPAC";
 }  // namespace
 
-PairEpac::PairEpac(LAMMPS *lmp, Law law, const char *style) : Pair(lmp), law_(law), style_(style)
-{
+PairEpac::PairEpac(LAMMPS* lmp, Law law, const char* style) : Pair(lmp), law_(law), style_(style) {
   single_enable = 0;
   no_virial_fdotr_compute = 1;
   centroidstressflag = CENTROID_NOTAVAIL;
@@ -58,11 +57,12 @@ PairEpac::PairEpac(LAMMPS *lmp, Law law, const char *style) : Pair(lmp), law_(la
   }
 }
 
-PairEpac::~PairEpac()
-{
+PairEpac::~PairEpac() {
   if (copymode) return;
-  if (fix_history_) modify->delete_fix(history_id);
-  else modify->delete_fix(dummy_id);
+  if (fix_history_)
+    modify->delete_fix(history_id);
+  else
+    modify->delete_fix(dummy_id);
   if (allocated) {
     memory->destroy(setflag);
     memory->destroy(cutsq);
@@ -71,8 +71,7 @@ PairEpac::~PairEpac()
   delete[] maxrad_;
 }
 
-void PairEpac::allocate()
-{
+void PairEpac::allocate() {
   allocated = 1;
   const int n = atom->ntypes;
   memory->create(setflag, n + 1, n + 1, "pair:setflag");
@@ -101,8 +100,7 @@ void PairEpac::allocate()
 // adhesive_radius: the stored adhesive radius a_na (paper) or 0.99 a_na (the authors' code);
 // release: an adhesive contact ends at its critical overlap (epac) or at zero overlap (the
 // authors' code). All set to the authors' choices for comparisons with granular mdr.
-void PairEpac::settings(int narg, char **arg)
-{
+void PairEpac::settings(int narg, char** arg) {
   pair_split_ = 0;
   delta_max_ = 0;
   damping_ = 0;
@@ -111,7 +109,11 @@ void PairEpac::settings(int narg, char **arg)
   energy_share_ = 0;
   adhesive_radius_ = 0;
   release_ = 0;
-  struct Keyword { const char *name; int *value; std::vector<const char *> choices; };
+  struct Keyword {
+    const char* name;
+    int* value;
+    std::vector<const char*> choices;
+  };
   const Keyword keys[] = {{"pair_split", &pair_split_, {"balanced", "geometric"}},
                           {"delta_max", &delta_max_, {"paper_19", "running_max"}},
                           {"damping", &damping_, {"restitution_exact", "authors"}},
@@ -121,8 +123,8 @@ void PairEpac::settings(int narg, char **arg)
                           {"adhesive_radius", &adhesive_radius_, {"paper", "authors"}},
                           {"release", &release_, {"critical_overlap", "zero_overlap"}}};
   for (int k = 0; k < narg; k += 2) {
-    const Keyword *key = nullptr;
-    for (const auto &kw : keys)
+    const Keyword* key = nullptr;
+    for (const auto& kw : keys)
       if (std::strcmp(arg[k], kw.name) == 0) key = &kw;
     if (!key || law_ != Law::mdr || k + 1 >= narg)
       error->all(FLERR, "Illegal pair_style {} command: {} (valid: {})", style_, arg[k],
@@ -136,7 +138,7 @@ void PairEpac::settings(int narg, char **arg)
       if (std::strcmp(arg[k + 1], key->choices[q]) == 0) found = static_cast<int>(q);
     if (found < 0) {
       std::string valid;
-      for (const char *c : key->choices) valid += (valid.empty() ? "" : ", ") + std::string(c);
+      for (const char* c : key->choices) valid += (valid.empty() ? "" : ", ") + std::string(c);
       error->all(FLERR, "pair_style {}: {} {} is not valid (valid: {})", style_, key->name, arg[k + 1], valid);
     }
     *key->value = found;
@@ -152,19 +154,21 @@ void PairEpac::settings(int narg, char **arg)
 // coefficient (0: no friction), gamma the surface energy [J/m^2] (0: no adhesion), Y the yield
 // stress [Pa] (inf: none), psi_b Part II's bulk-response threshold (not in epac: must be 0),
 // kt the constant tangential stiffness [N/m] of pair_style epac/mdr friction authors.
-int PairEpac::coefficient_count() const
-{
+int PairEpac::coefficient_count() const {
   switch (law_) {
-    case Law::hertz_mindlin: return 4;
-    case Law::jkr: return 5;
-    case Law::nan2022: return 6;
-    case Law::mdr: return 6;
+    case Law::hertz_mindlin:
+      return 4;
+    case Law::jkr:
+      return 5;
+    case Law::nan2022:
+      return 6;
+    case Law::mdr:
+      return 6;
   }
   return 0;
 }
 
-epac::Material PairEpac::material_from(char **arg, int type) const
-{
+epac::Material PairEpac::material_from(char** arg, int type) const {
   epac::Material m;
   m.name = "type " + std::to_string(type);
   m.density = 1.0;  // unused: masses come from the atoms' rmass
@@ -172,18 +176,30 @@ epac::Material PairEpac::material_from(char **arg, int type) const
   m.youngs_modulus = num(0);
   m.poisson_ratio = num(1);
   switch (law_) {
-    case Law::hertz_mindlin: m.restitution = num(2); m.friction = num(3); break;
-    case Law::jkr: m.restitution = num(2); m.friction = num(3); m.surface_energy = num(4); break;
+    case Law::hertz_mindlin:
+      m.restitution = num(2);
+      m.friction = num(3);
+      break;
+    case Law::jkr:
+      m.restitution = num(2);
+      m.friction = num(3);
+      m.surface_energy = num(4);
+      break;
     case Law::nan2022:
-      m.restitution = num(2); m.friction = num(3); m.surface_energy = num(4); m.yield_stress = num(5);
+      m.restitution = num(2);
+      m.friction = num(3);
+      m.surface_energy = num(4);
+      m.yield_stress = num(5);
       break;
     case Law::mdr: {
       m.yield_stress = num(2);
       m.surface_energy = num(3);
       const double psi_b = num(4);
       if (psi_b != 0.0)
-        error->all(FLERR, "pair_coeff {}: psi_b = {} is not supported (valid: 0; epac implements MDR Part I, "
-                   "without Part II's bulk response)", style_, psi_b);
+        error->all(FLERR,
+                   "pair_coeff {}: psi_b = {} is not supported (valid: 0; epac implements MDR Part I, "
+                   "without Part II's bulk response)",
+                   style_, psi_b);
       m.restitution = num(5);
       break;
     }
@@ -191,8 +207,7 @@ epac::Material PairEpac::material_from(char **arg, int type) const
   return m;
 }
 
-void PairEpac::coeff(int narg, char **arg)
-{
+void PairEpac::coeff(int narg, char** arg) {
   if (!allocated) allocate();
   const int nc = coefficient_count();
   const bool mdr_keys = (law_ == Law::mdr && narg > 2 + nc && (narg - 2 - nc) % 2 == 0 && narg <= 2 + nc + 4);
@@ -204,23 +219,25 @@ void PairEpac::coeff(int narg, char **arg)
   utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
   // epac mixes two materials itself (its pair tables); a pair_coeff sets one type's material
   if (!(ilo == jlo && ihi == jhi))
-    error->all(FLERR, "pair_coeff {} sets a material per atom type: use 'I I' or '* *' (epac mixes unlike "
-               "types from their materials)", style_);
+    error->all(FLERR,
+               "pair_coeff {} sets a material per atom type: use 'I I' or '* *' (epac mixes unlike "
+               "types from their materials)",
+               style_);
   epac::Material m = material_from(arg + 2, ilo);
   double kt = 0.0;
   for (int k = 2 + nc; mdr_keys && k < narg; k += 2) {
-    if (std::strcmp(arg[k], "mu") == 0) m.friction = utils::numeric(FLERR, arg[k + 1], false, lmp);
+    if (std::strcmp(arg[k], "mu") == 0)
+      m.friction = utils::numeric(FLERR, arg[k + 1], false, lmp);
     else if (std::strcmp(arg[k], "kt") == 0) {
       kt = utils::numeric(FLERR, arg[k + 1], false, lmp);
       if (!(kt > 0.0) || !std::isfinite(kt))
         error->all(FLERR, "pair_coeff {}: kt = {} is not valid (valid: 0 < kt < inf, N/m)", style_, kt);
-    } else error->all(FLERR, "pair_coeff {}: unknown keyword {} (valid: mu, kt)", style_, arg[k]);
+    } else
+      error->all(FLERR, "pair_coeff {}: unknown keyword {} (valid: mu, kt)", style_, arg[k]);
   }
   try {
     m.validate();
-  } catch (std::exception &e) {
-    error->all(FLERR, "pair_coeff {}: {}", style_, e.what());
-  }
+  } catch (std::exception& e) { error->all(FLERR, "pair_coeff {}: {}", style_, e.what()); }
   int count = 0;
   for (int i = ilo; i <= ihi; i++) {
     materials_[i - 1] = m;
@@ -235,27 +252,27 @@ void PairEpac::coeff(int narg, char **arg)
   if (count == 0) error->all(FLERR, "Incorrect args for pair coefficients");
 }
 
-void PairEpac::init_style()
-{
+void PairEpac::init_style() {
   if (!atom->radius_flag || !atom->rmass_flag || !atom->omega_flag || !atom->torque_flag)
     error->all(FLERR, "Pair {} requires atom attributes radius, rmass, omega, torque (atom_style sphere)", style_);
   if (comm->ghost_velocity == 0)
     error->all(FLERR, "Pair {} requires ghost atoms store velocity (comm_modify vel yes)", style_);
   for (int t = 0; t < atom->ntypes; t++)
-    if (!have_material_[t]) error->all(FLERR, "Pair {}: no pair_coeff {} {} (every type needs a material)", style_, t + 1, t + 1);
+    if (!have_material_[t])
+      error->all(FLERR, "Pair {}: no pair_coeff {} {} (every type needs a material)", style_, t + 1, t + 1);
 
   // fix epac/mdr asks for MDR radius growth (37)-(39); without it epac/mdr runs without growth
   growth_fix_ = nullptr;
-  for (auto *f : modify->get_fix_by_style("^epac/mdr$")) growth_fix_ = dynamic_cast<FixEpacMdr *>(f);
+  for (auto* f : modify->get_fix_by_style("^epac/mdr$")) growth_fix_ = dynamic_cast<FixEpacMdr*>(f);
   if (growth_fix_ && law_ != Law::mdr)
     error->all(FLERR, "fix epac/mdr (radius growth) needs pair_style epac/mdr, not {}", style_);
   // fix epac/wall: per fix, one rigid copy of each type's material for the wall side (it takes the
   // particle's friction, restitution and surface energy unless the fix sets its own;
   // epac::pair_properties)
   wall_fixes_.clear();
-  for (auto *f : modify->get_fix_by_style("^epac/wall$")) wall_fixes_.push_back(dynamic_cast<FixEpacWall *>(f));
+  for (auto* f : modify->get_fix_by_style("^epac/wall$")) wall_fixes_.push_back(dynamic_cast<FixEpacWall*>(f));
   std::vector<epac::Material> mats = materials_;
-  for (auto *wf : wall_fixes_)
+  for (auto* wf : wall_fixes_)
     for (int t = 0; t < atom->ntypes; t++) mats.push_back(wf->wall_material(materials_[t], t + 1));
   epac::lammps::MdrChoices choices;
   choices.pair_split = pair_split_;
@@ -270,18 +287,20 @@ void PairEpac::init_style()
     choices.kt = kt_[0];
     for (int t = 0; t < atom->ntypes; t++)
       if (kt_[t] != kt_[0] || !(kt_[t] > 0.0))
-        error->all(FLERR, "pair {} friction authors: every type needs the same pair_coeff kt > 0 (type {}: {}, "
-                   "type 1: {})", style_, t + 1, kt_[t], kt_[0]);
+        error->all(FLERR,
+                   "pair {} friction authors: every type needs the same pair_coeff kt > 0 (type {}: {}, "
+                   "type 1: {})",
+                   style_, t + 1, kt_[t], kt_[0]);
   }
   try {
     engine_ = epac::lammps::make_engine(law_, mats, growth_fix_ != nullptr, choices);
-  } catch (std::exception &e) {
-    error->all(FLERR, "pair {}: {}", style_, e.what());
-  }
+  } catch (std::exception& e) { error->all(FLERR, "pair {}: {}", style_, e.what()); }
   growth_ = engine_->radius_growth();
   if (fix_history_ && engine_->history_size() != history_size_)
-    error->all(FLERR, "pair {}: the coefficients or fix epac/mdr changed the history size ({} -> {}) after the "
-               "first run; start a new pair_style", style_, history_size_, engine_->history_size());
+    error->all(FLERR,
+               "pair {}: the coefficients or fix epac/mdr changed the history size ({} -> {}) after the "
+               "first run; start a new pair_style",
+               style_, history_size_, engine_->history_size());
   history_size_ = engine_->history_size();
   if (!wall_fixes_.empty() && history_size_ > FixEpacWall::kMaxHistory)
     error->all(FLERR, "pair {}: {} history fields per contact, fix epac/wall holds {}", style_, history_size_,
@@ -290,14 +309,14 @@ void PairEpac::init_style()
   neighbor->add_request(this, NeighConst::REQ_SIZE | NeighConst::REQ_HISTORY);
   if (fix_history_ == nullptr) {
     const int dnum = history_size_ > 0 ? history_size_ : 1;  // fix NEIGH_HISTORY needs >= 1 value
-    fix_history_ = dynamic_cast<FixNeighHistory *>(
+    fix_history_ = dynamic_cast<FixNeighHistory*>(
         modify->replace_fix(dummy_id, std::string(history_id) + " all NEIGH_HISTORY " + std::to_string(dnum), 1));
     fix_history_->pair = this;
   }
 
   // largest radius per type (cutoffs), as pair granular does
-  double *radius = atom->radius;
-  int *type = atom->type;
+  double* radius = atom->radius;
+  int* type = atom->type;
   for (int t = 1; t <= atom->ntypes; t++) onerad_[t] = 0.0;
   for (int i = 0; i < atom->nlocal; i++) onerad_[type[i]] = MAX(onerad_[type[i]], radius[i]);
   MPI_Allreduce(&onerad_[1], &maxrad_[1], atom->ntypes, MPI_DOUBLE, MPI_MAX, world);
@@ -321,16 +340,17 @@ void PairEpac::init_style()
     for (int t = 1; t <= atom->ntypes; t++) rmax = MAX(rmax, maxrad_[t]);
     const double cap = engine_->radius_cap();
     if (comm->me == 0 && neighbor->skin < (cap - 1.0) * rmax)
-      error->warning(FLERR, "pair {} with fix epac/mdr: neighbor skin {} is below (radius_cap - 1) * max radius "
+      error->warning(FLERR,
+                     "pair {} with fix epac/mdr: neighbor skin {} is below (radius_cap - 1) * max radius "
                      "= {} (radius_cap {}): radius growth between neighbour-list rebuilds is not part of "
                      "LAMMPS's rebuild trigger, so contacts can be missed if radii grow by more than the skin "
                      "left over by the displacements; use a larger skin or neigh_modify every 1 delay 0 "
-                     "with a margin", style_, neighbor->skin, (cap - 1.0) * rmax, cap);
+                     "with a margin",
+                     style_, neighbor->skin, (cap - 1.0) * rmax, cap);
   }
 }
 
-double PairEpac::init_one(int i, int j)
-{
+double PairEpac::init_one(int i, int j) {
   double cut = maxrad_[i] + maxrad_[j];
   if (cut <= 0.0) {  // no atoms of these types yet: the largest cutoff of the others
     for (int k = 1; k <= atom->ntypes; k++) cut = MAX(cut, 2.0 * maxrad_[k]);
@@ -342,9 +362,8 @@ double PairEpac::init_one(int i, int j)
   return cut;
 }
 
-void PairEpac::gather_atoms(int nall)
-{
-  auto &p = engine_->particles(nall);
+void PairEpac::gather_atoms(int nall) {
+  auto& p = engine_->particles(nall);
   auto x = Kokkos::create_mirror_view(p.x);
   auto v = Kokkos::create_mirror_view(p.v);
   auto w = Kokkos::create_mirror_view(p.omega);
@@ -358,13 +377,13 @@ void PairEpac::gather_atoms(int nall)
   double *radius = atom->radius, *rmass = atom->rmass;
   // with growth, R_o is the fix's (the moment of inertia too: epac's convention (2/5) m R_o^2);
   // without, R_o = R as before
-  double *ro = radius;
+  double* ro = radius;
   if (growth_) {
     growth_fix_->initialize_new_atoms();
     ro = growth_fix_->initial_radius();
   }
-  int *type = atom->type;
-  tagint *tag = atom->tag;
+  int* type = atom->type;
+  tagint* tag = atom->tag;
   Kokkos::parallel_for("epac::lammps::gather", Kokkos::RangePolicy<Kokkos::DefaultHostExecutionSpace>(0, nall),
                        [&](int i) {
                          for (int d = 0; d < 3; d++) {
@@ -379,13 +398,19 @@ void PairEpac::gather_atoms(int nall)
                          mat(i) = type[i] - 1;
                          gid(i) = static_cast<std::int64_t>(tag[i]);
                        });
-  Kokkos::deep_copy(p.x, x); Kokkos::deep_copy(p.v, v); Kokkos::deep_copy(p.omega, w);
-  Kokkos::deep_copy(p.radius, R); Kokkos::deep_copy(p.radius0, R0); Kokkos::deep_copy(p.mass, m);
-  Kokkos::deep_copy(p.inertia, I); Kokkos::deep_copy(p.material, mat); Kokkos::deep_copy(p.gid, gid);
+  Kokkos::deep_copy(p.x, x);
+  Kokkos::deep_copy(p.v, v);
+  Kokkos::deep_copy(p.omega, w);
+  Kokkos::deep_copy(p.radius, R);
+  Kokkos::deep_copy(p.radius0, R0);
+  Kokkos::deep_copy(p.mass, m);
+  Kokkos::deep_copy(p.inertia, I);
+  Kokkos::deep_copy(p.material, mat);
+  Kokkos::deep_copy(p.gid, gid);
   if (growth_) {  // V of MDR (39), kept by the fix between passes
     auto Vd = engine_->growth_volume();
     auto V = Kokkos::create_mirror_view(Vd);
-    const double *av_ = growth_fix_->volume();
+    const double* av_ = growth_fix_->volume();
     for (int i = 0; i < nall; i++) V(i) = av_[i];
     Kokkos::deep_copy(Vd, V);
   }
@@ -395,11 +420,10 @@ void PairEpac::gather_atoms(int nall)
 // complete with newton off; the ghosts' partial sums are cleared), then R and V of the local atoms
 // go back to LAMMPS and on to the ghosts. Setup passes discard their sums (no growth), as the
 // authors' fix_granular_mdr.cpp does.
-void PairEpac::grow_radii(int nlocal, bool advance)
-{
+void PairEpac::grow_radii(int nlocal, bool advance) {
   engine_->update_radii(advance ? nlocal : 0);
   if (!advance) return;
-  auto &p = engine_->particles(0);
+  auto& p = engine_->particles(0);
   auto R = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.radius);
   auto V = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), engine_->growth_volume());
   double *radius = atom->radius, *av = growth_fix_->volume();
@@ -413,18 +437,20 @@ void PairEpac::grow_radii(int nlocal, bool advance)
 // The half list as an epac contact list, with the history slots of fix NEIGH_HISTORY; rebuilt
 // when LAMMPS rebuilt its list. Every listed pair is a contact (epac returns zero force and
 // clears the history of pairs apart beyond the law's range).
-void PairEpac::build_contacts()
-{
-  first_.clear(); second_.clear(); hist_.clear(); touch_.clear();
+void PairEpac::build_contacts() {
+  first_.clear();
+  second_.clear();
+  hist_.clear();
+  touch_.clear();
   const int inum = list->inum;
   int *ilist = list->ilist, *numneigh = list->numneigh, **firstneigh = list->firstneigh;
-  int **firsttouch = fix_history_->firstflag;
-  double **firstvalue = fix_history_->firstvalue;
+  int** firsttouch = fix_history_->firstflag;
+  double** firstvalue = fix_history_->firstvalue;
   const int dnum = fix_history_->get_dnum();
-  double *special_lj = force->special_lj;
+  double* special_lj = force->special_lj;
   for (int ii = 0; ii < inum; ii++) {
     const int i = ilist[ii];
-    int *jlist = firstneigh[i];
+    int* jlist = firstneigh[i];
     for (int jj = 0; jj < numneigh[i]; jj++) {
       int j = jlist[jj];
       if (special_lj[sbmask(j)] == 0.0) continue;
@@ -439,7 +465,10 @@ void PairEpac::build_contacts()
   contacts_ = epac::ContactList<>(n);
   auto f = Kokkos::create_mirror_view(contacts_.first);
   auto s = Kokkos::create_mirror_view(contacts_.second);
-  for (int k = 0; k < n; k++) { f(k) = first_[k]; s(k) = second_[k]; }
+  for (int k = 0; k < n; k++) {
+    f(k) = first_[k];
+    s(k) = second_[k];
+  }
   Kokkos::deep_copy(contacts_.first, f);
   Kokkos::deep_copy(contacts_.second, s);
   history_ = epac::ContactHistory<double>(n, history_size_, "lammps.history");
@@ -454,9 +483,8 @@ void PairEpac::build_contacts()
 // The wall contacts of this pass (fix epac/wall): one tangent plane per contact, material: the
 // fix's rigid copy of the atom type's (ntypes (1 + f) + type - 1), history rows from the fixes'
 // per-atom slots.
-void PairEpac::collect_walls()
-{
-  epac::lammps::WallPass &pass = walls_;
+void PairEpac::collect_walls() {
+  epac::lammps::WallPass& pass = walls_;
   wall_contacts_.clear();
   wall_owner_.clear();
   for (std::size_t f = 0; f < wall_fixes_.size(); f++) {
@@ -482,27 +510,33 @@ void PairEpac::collect_walls()
   auto first = Kokkos::create_mirror_view(pass.list.first);
   auto second = Kokkos::create_mirror_view(pass.list.second);
   auto h = Kokkos::create_mirror_view(pass.history.data);
-  int *type = atom->type;
+  int* type = atom->type;
   for (int k = 0; k < n; k++) {
-    const auto &c = wall_contacts_[k];
-    for (int d = 0; d < 3; d++) { pt(k, d) = c.point[d]; nv(k, d) = c.normal[d]; vel(k, d) = c.velocity[d]; }
+    const auto& c = wall_contacts_[k];
+    for (int d = 0; d < 3; d++) {
+      pt(k, d) = c.point[d];
+      nv(k, d) = c.normal[d];
+      vel(k, d) = c.velocity[d];
+    }
     mat(k) = atom->ntypes * (1 + wall_owner_[k]) + type[c.atom] - 1;
     first(k) = c.atom;
     second(k) = k;
     for (int q = 0; q < history_size_; q++) h(k, q) = c.history[q];
   }
-  Kokkos::deep_copy(pass.walls.point, pt); Kokkos::deep_copy(pass.walls.normal, nv);
-  Kokkos::deep_copy(pass.walls.velocity, vel); Kokkos::deep_copy(pass.walls.material, mat);
-  Kokkos::deep_copy(pass.list.first, first); Kokkos::deep_copy(pass.list.second, second);
+  Kokkos::deep_copy(pass.walls.point, pt);
+  Kokkos::deep_copy(pass.walls.normal, nv);
+  Kokkos::deep_copy(pass.walls.velocity, vel);
+  Kokkos::deep_copy(pass.walls.material, mat);
+  Kokkos::deep_copy(pass.list.first, first);
+  Kokkos::deep_copy(pass.list.second, second);
   if (history_size_ > 0) Kokkos::deep_copy(pass.history.data, h);
 }
 
 // Wall forces and torques onto the atoms, into the fixes' per-atom output, and (non-setup
 // passes) the advanced history back into the fixes' slots.
-void PairEpac::apply_walls(bool advance)
-{
-  const epac::lammps::WallPass &pass = walls_;
-  for (auto *f : wall_fixes_) f->clear_contact_output();
+void PairEpac::apply_walls(bool advance) {
+  const epac::lammps::WallPass& pass = walls_;
+  for (auto* f : wall_fixes_) f->clear_contact_output();
   const int n = static_cast<int>(wall_contacts_.size());
   if (n == 0) return;
   auto F = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), pass.buffer.force);
@@ -510,30 +544,34 @@ void PairEpac::apply_walls(bool advance)
   auto h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), pass.history.data);
   double **f = atom->f, **t = atom->torque, *radius = atom->radius;
   for (int k = 0; k < n; k++) {
-    const auto &c = wall_contacts_[k];
+    const auto& c = wall_contacts_[k];
     const double fk[3] = {F(k, 0), F(k, 1), F(k, 2)};
-    for (int d = 0; d < 3; d++) { f[c.atom][d] += fk[d]; t[c.atom][d] += T(k, d); }
+    for (int d = 0; d < 3; d++) {
+      f[c.atom][d] += fk[d];
+      t[c.atom][d] += T(k, d);
+    }
     wall_fixes_[wall_owner_[k]]->record_contact(c, fk, radius[c.atom]);
     if (advance)
       for (int q = 0; q < history_size_; q++) c.history[q] = h(k, q);
   }
 }
 
-void PairEpac::add_forces(int nlocal, bool with_ghosts)
-{
-  auto &p = engine_->particles(0);
+void PairEpac::add_forces(int nlocal, bool with_ghosts) {
+  auto& p = engine_->particles(0);
   auto F = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.force);
   auto T = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.torque);
   double **f = atom->f, **t = atom->torque;
   const int n = with_ghosts ? nlocal + atom->nghost : nlocal;
   Kokkos::parallel_for("epac::lammps::scatter", Kokkos::RangePolicy<Kokkos::DefaultHostExecutionSpace>(0, n),
                        [&](int i) {
-                         for (int d = 0; d < 3; d++) { f[i][d] += F(i, d); t[i][d] += T(i, d); }
+                         for (int d = 0; d < 3; d++) {
+                           f[i][d] += F(i, d);
+                           t[i][d] += T(i, d);
+                         }
                        });
 }
 
-void PairEpac::compute(int eflag, int vflag)
-{
+void PairEpac::compute(int eflag, int vflag) {
   ev_init(eflag, vflag);
   const int nlocal = atom->nlocal;
   const int nall = nlocal + atom->nghost;
@@ -559,7 +597,7 @@ void PairEpac::compute(int eflag, int vflag)
   const double dt = advance ? update->dt : 0.0;
   const bool have_walls = !wall_fixes_.empty();
   if (have_walls) collect_walls();
-  const epac::lammps::WallPass *wp = have_walls ? &walls_ : nullptr;
+  const epac::lammps::WallPass* wp = have_walls ? &walls_ : nullptr;
   if (vflag_either) {
     epac::ContactForceBuffer<double, epac::DefaultDevice> buf(n);
     engine_->compute(contacts_, h, dt, buf, wp);
@@ -569,9 +607,15 @@ void PairEpac::compute(int eflag, int vflag)
     double **f = atom->f, **t = atom->torque, **x = atom->x;
     for (int k = 0; k < n; k++) {
       const int i = first_[k], j = second_[k];
-      for (int d = 0; d < 3; d++) { f[i][d] += F(k, d); t[i][d] += Ti(k, d); }
+      for (int d = 0; d < 3; d++) {
+        f[i][d] += F(k, d);
+        t[i][d] += Ti(k, d);
+      }
       if (j < nlocal || newton)
-        for (int d = 0; d < 3; d++) { f[j][d] -= F(k, d); t[j][d] += Tj(k, d); }
+        for (int d = 0; d < 3; d++) {
+          f[j][d] -= F(k, d);
+          t[j][d] += Tj(k, d);
+        }
       ev_tally_xyz(i, j, nlocal, force->newton_pair, 0.0, 0.0, F(k, 0), F(k, 1), F(k, 2), x[i][0] - x[j][0],
                    x[i][1] - x[j][1], x[i][2] - x[j][2]);
     }
@@ -596,48 +640,53 @@ void PairEpac::compute(int eflag, int vflag)
   }
 }
 
-void PairEpac::transfer_history(double *source, double *target, int, int)
-{
+void PairEpac::transfer_history(double* source, double* target, int, int) {
   for (int q = 0; q < history_size_; q++) target[q] = source[q];
 }
 
-void PairEpac::write_restart(FILE *fp)
-{
+void PairEpac::write_restart(FILE* fp) {
   for (int i = 1; i <= atom->ntypes; i++) {
-    const epac::Material &m = materials_[i - 1];
-    const double v[8] = {m.youngs_modulus, m.poisson_ratio, m.restitution, m.friction, m.surface_energy,
-                         m.yield_stress, static_cast<double>(have_material_[i - 1]), kt_[i - 1]};
+    const epac::Material& m = materials_[i - 1];
+    const double v[8] = {m.youngs_modulus,
+                         m.poisson_ratio,
+                         m.restitution,
+                         m.friction,
+                         m.surface_energy,
+                         m.yield_stress,
+                         static_cast<double>(have_material_[i - 1]),
+                         kt_[i - 1]};
     fwrite(v, sizeof(double), 8, fp);
   }
 }
 
-void PairEpac::read_restart(FILE *fp)
-{
+void PairEpac::read_restart(FILE* fp) {
   allocate();
   for (int i = 1; i <= atom->ntypes; i++) {
     double v[8];
     if (comm->me == 0) utils::sfread(FLERR, v, sizeof(double), 8, fp, nullptr, error);
     MPI_Bcast(v, 8, MPI_DOUBLE, 0, world);
-    epac::Material &m = materials_[i - 1];
+    epac::Material& m = materials_[i - 1];
     m.name = "type " + std::to_string(i);
     m.density = 1.0;
-    m.youngs_modulus = v[0]; m.poisson_ratio = v[1]; m.restitution = v[2]; m.friction = v[3];
-    m.surface_energy = v[4]; m.yield_stress = v[5];
+    m.youngs_modulus = v[0];
+    m.poisson_ratio = v[1];
+    m.restitution = v[2];
+    m.friction = v[3];
+    m.surface_energy = v[4];
+    m.yield_stress = v[5];
     have_material_[i - 1] = v[6] != 0.0;
     kt_[i - 1] = v[7];
     for (int j = i; j <= atom->ntypes; j++) setflag[i][j] = have_material_[i - 1] && have_material_[j - 1];
   }
 }
 
-void PairEpac::write_restart_settings(FILE *fp)
-{
-  const int v[8] = {pair_split_,   delta_max_,    damping_,         friction_,
-                    yield_onset_,  energy_share_, adhesive_radius_, release_};
+void PairEpac::write_restart_settings(FILE* fp) {
+  const int v[8] = {pair_split_,  delta_max_,    damping_,         friction_,
+                    yield_onset_, energy_share_, adhesive_radius_, release_};
   fwrite(v, sizeof(int), 8, fp);
 }
 
-void PairEpac::read_restart_settings(FILE *fp)
-{
+void PairEpac::read_restart_settings(FILE* fp) {
   int v[8] = {0, 0, 0, 0, 0, 0, 0, 0};
   if (comm->me == 0) utils::sfread(FLERR, v, sizeof(int), 8, fp, nullptr, error);
   MPI_Bcast(v, 8, MPI_INT, 0, world);
@@ -651,8 +700,7 @@ void PairEpac::read_restart_settings(FILE *fp)
   release_ = v[7];
 }
 
-double PairEpac::memory_usage()
-{
-  return static_cast<double>(first_.size()) * (2 * sizeof(int) + sizeof(double *) + sizeof(int *)) +
+double PairEpac::memory_usage() {
+  return static_cast<double>(first_.size()) * (2 * sizeof(int) + sizeof(double*) + sizeof(int*)) +
          static_cast<double>(history_.bytes());
 }

@@ -91,9 +91,12 @@ ImpactRun classify_timeseries(const std::string& csv_path, const ImpactScene& s,
     if (f != 0) touched = true;
     r.max_force = std::max(r.max_force, f);
     r.min_force = std::min(r.min_force, f);
-    if (phase == 0 && f > 0) phase = 1;
-    else if (phase == 1 && f < 0) phase = 2;
-    else if (phase == 2 && f > 0) phase = 3;
+    if (phase == 0 && f > 0)
+      phase = 1;
+    else if (phase == 1 && f < 0)
+      phase = 2;
+    else if (phase == 2 && f > 0)
+      phase = 3;
   }
   r.steps = rows > 0 ? rows - 1 : 0;
   if (!touched)
@@ -109,7 +112,8 @@ ImpactRun classify_timeseries(const std::string& csv_path, const ImpactScene& s,
     return r;
   }
   throw ParameterError(s.scene.source + ": at V = " + fmt(V) + " m/s the impact was not over after " +
-                       std::to_string(r.steps) + " steps (still attached, not yet back in compression): raise [run] steps");
+                       std::to_string(r.steps) +
+                       " steps (still attached, not yet back in compression): raise [run] steps");
 }
 
 ImpactRun simulate_impact(const ImpactScene& s, double V, const std::string& out_dir) {
@@ -144,10 +148,8 @@ StickingSearch find_sticking_velocity(const ImpactScene& s, double lo, double hi
     if (on_run) on_run(x);
     return x.outcome;
   };
-  if (run(lo) != Outcome::stick)
-    throw ParameterError("--lo = " + fmt(lo) + " m/s already rebounds: give a lower --lo");
-  if (run(hi) != Outcome::rebound)
-    throw ParameterError("--hi = " + fmt(hi) + " m/s still sticks: give a higher --hi");
+  if (run(lo) != Outcome::stick) throw ParameterError("--lo = " + fmt(lo) + " m/s already rebounds: give a lower --lo");
+  if (run(hi) != Outcome::rebound) throw ParameterError("--hi = " + fmt(hi) + " m/s still sticks: give a higher --hi");
   while (hi - lo > rel_tol * hi) {
     const double mid = 0.5 * (lo + hi);
     (run(mid) == Outcome::rebound ? hi : lo) = mid;

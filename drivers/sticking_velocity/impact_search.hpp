@@ -37,11 +37,11 @@ ImpactScene make_impact_scene(const driver::Scene& s);
 enum class Outcome { stick, rebound };
 
 struct ImpactRun {
-  double V = 0;               // impact speed [m/s]
+  double V = 0;  // impact speed [m/s]
   Outcome outcome = Outcome::stick;
-  double rebound_speed = 0;   // [m/s], sqrt(2 KE / m) at the last step (0 when stuck)
-  double max_force = 0;       // largest compressive force [N]
-  double min_force = 0;       // most tensile force [N] (< 0)
+  double rebound_speed = 0;  // [m/s], sqrt(2 KE / m) at the last step (0 when stuck)
+  double max_force = 0;      // largest compressive force [N]
+  double min_force = 0;      // most tensile force [N] (< 0)
   std::int64_t steps = 0;
   double wall_time_s = 0;
 };
@@ -53,8 +53,8 @@ ImpactRun classify_timeseries(const std::string& csv_path, const ImpactScene& s,
 ImpactRun simulate_impact(const ImpactScene& s, double V, const std::string& out_dir);
 
 struct StickingSearch {
-  double lo = 0, hi = 0;   // final bracket: lo sticks, hi rebounds
-  double V_ys = 0;         // (lo + hi) / 2
+  double lo = 0, hi = 0;        // final bracket: lo sticks, hi rebounds
+  double V_ys = 0;              // (lo + hi) / 2
   std::vector<ImpactRun> runs;  // in the order run
 };
 

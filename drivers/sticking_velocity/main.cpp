@@ -28,14 +28,16 @@ const char* outcome_name(epac::sticking::Outcome o) {
 
 int main(int argc, char** argv) {
   using namespace epac::sticking;
-  CLI::App app{"epac-sticking-velocity: critical sticking velocity of one particle on a wall by bisection on "
-               "driver runs (Nan Sec. 4)"};
+  CLI::App app{
+      "epac-sticking-velocity: critical sticking velocity of one particle on a wall by bisection on "
+      "driver runs (Nan Sec. 4)"};
   std::string scene_path, out_dir = "epac-sticking-out";
   double lo = 0, hi = 0, tol = 1e-3;
   int threads = 1;
   bool quiet = false;
   app.add_option("scene", scene_path, "scene: one particle, one wall (drivers/sticking_velocity/README.md)")
-      ->required()->check(CLI::ExistingFile);
+      ->required()
+      ->check(CLI::ExistingFile);
   app.add_option("--lo", lo, "impact speed that sticks [m/s] (default: 0.5 x the analytic V_ys, model nan2022)");
   app.add_option("--hi", hi, "impact speed that rebounds [m/s] (default: 3 x the analytic V_ys, model nan2022)");
   app.add_option("--tol", tol, "stop when hi - lo <= tol x hi (default 1e-3)");
@@ -88,8 +90,8 @@ int main(int argc, char** argv) {
 
   std::printf("V_ys (simulated) = %.6g m/s (bracket [%.6g, %.6g], %zu runs)", r.V_ys, r.lo, r.hi, r.runs.size());
   if (a.available)
-    std::printf("; analytic Nan (78)-(79), no damping: V_ys = %.6g m/s, V_s = %.6g m/s (Nan (73))%s", a.v.V_ys,
-                a.v.V_s, a.v.always_yields ? ", adhesion-induced yield (f_y < f_0)" : "");
+    std::printf("; analytic Nan (78)-(79), no damping: V_ys = %.6g m/s, V_s = %.6g m/s (Nan (73))%s", a.v.V_ys, a.v.V_s,
+                a.v.always_yields ? ", adhesion-induced yield (f_y < f_0)" : "");
   std::printf("\n");
 
   nlohmann::json j;
@@ -104,8 +106,12 @@ int main(int argc, char** argv) {
   j["bracket"] = {r.lo, r.hi};
   nlohmann::json runs = nlohmann::json::array();
   for (const auto& x : r.runs)
-    runs.push_back({{"V", x.V}, {"outcome", outcome_name(x.outcome)}, {"rebound_speed", x.rebound_speed},
-                    {"max_force", x.max_force}, {"min_force", x.min_force}, {"wall_time_s", x.wall_time_s}});
+    runs.push_back({{"V", x.V},
+                    {"outcome", outcome_name(x.outcome)},
+                    {"rebound_speed", x.rebound_speed},
+                    {"max_force", x.max_force},
+                    {"min_force", x.min_force},
+                    {"wall_time_s", x.wall_time_s}});
   j["runs"] = runs;
   if (a.available) {
     j["analytic"] = {{"V_s", a.v.V_s},

@@ -35,7 +35,8 @@ TEST_CASE("force-overlap CSV: three curves written at 17 digits read back bit fo
   csv.precision(17);
   csv << "# synthetic\noverlap_1,force_1,overlap_2,force_2,overlap_3,force_3\n";
   for (int k = 0; k < 50; ++k)
-    for (int i = 0; i < 3; ++i) csv << (i ? "," : "") << 1e-9 * k / 3.0 * (i + 1) << "," << 1e-6 / (k + 7.0) << (i == 2 ? "\n" : "");
+    for (int i = 0; i < 3; ++i)
+      csv << (i ? "," : "") << 1e-9 * k / 3.0 * (i + 1) << "," << 1e-6 / (k + 7.0) << (i == 2 ? "\n" : "");
   std::istringstream is(csv.str());
   const auto parsed = parse_force_overlap_csv(is);
   REQUIRE(parsed.size() == 3);

@@ -12,20 +12,21 @@ TEMPLATE_LIST_TEST_CASE("math shim evaluates on every backend", "[core]", test::
   using D = typename TestType::device;
   using T = typename TestType::scalar;
   Kokkos::View<T*, D> out("out", 12);
-  Kokkos::parallel_for(Kokkos::RangePolicy<typename D::execution_space>(0, 1), KOKKOS_LAMBDA(int) {
-    out(0) = math::sqrt(T(4));
-    out(1) = math::cbrt(T(27));
-    out(2) = math::acos(T(-1));
-    out(3) = math::acos_clamped(T(1.0000001));   // just outside the domain: clamped to 1
-    out(4) = math::sqrt_nonneg(T(-1e-20));        // round-off below zero: 0, not NaN
-    out(5) = math::clamp(T(5), T(0), T(1));
-    out(6) = math::min(T(2), T(-3));
-    out(7) = math::max(T(2), T(-3));
-    out(8) = math::safe_div(T(1), T(0), T(1e-3));
-    out(9) = math::pow(T(2), T(10));
-    out(10) = norm(cross(Vec3<T>(1, 0, 0), Vec3<T>(0, 1, 0)));
-    out(11) = math::log(math::exp(T(1.5)));
-  });
+  Kokkos::parallel_for(
+      Kokkos::RangePolicy<typename D::execution_space>(0, 1), KOKKOS_LAMBDA(int) {
+        out(0) = math::sqrt(T(4));
+        out(1) = math::cbrt(T(27));
+        out(2) = math::acos(T(-1));
+        out(3) = math::acos_clamped(T(1.0000001));  // just outside the domain: clamped to 1
+        out(4) = math::sqrt_nonneg(T(-1e-20));      // round-off below zero: 0, not NaN
+        out(5) = math::clamp(T(5), T(0), T(1));
+        out(6) = math::min(T(2), T(-3));
+        out(7) = math::max(T(2), T(-3));
+        out(8) = math::safe_div(T(1), T(0), T(1e-3));
+        out(9) = math::pow(T(2), T(10));
+        out(10) = norm(cross(Vec3<T>(1, 0, 0), Vec3<T>(0, 1, 0)));
+        out(11) = math::log(math::exp(T(1.5)));
+      });
   auto h = test::to_host(out);
   const double tol = std::is_same<T, float>::value ? 1e-6 : 1e-14;
   CHECK(h(0) == Approx(2).epsilon(tol));

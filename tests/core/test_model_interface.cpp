@@ -33,12 +33,14 @@ static_assert(accepted<HertzMindlin<double>>() && accepted<HertzMindlin<float, E
 static_assert(accepted<LinearSpring<double>>() && accepted<LinearSpring<float, Effects<kAll>>>() &&
                   accepted<LinearSpring<double, Effects<kNone>>>(),
               "LinearSpring");
-static_assert(accepted<Jkr<double>>() && accepted<Jkr<float, Effects<kAll>>>() && accepted<Jkr<double, Effects<kNone>>>(),
+static_assert(accepted<Jkr<double>>() && accepted<Jkr<float, Effects<kAll>>>() &&
+                  accepted<Jkr<double, Effects<kNone>>>(),
               "Jkr");
 static_assert(accepted<Nan2022<double>>() && accepted<Nan2022<float, Effects<kAll>>>() &&
                   accepted<Nan2022<double, Effects<kNone>>>(),
               "Nan2022");
-static_assert(accepted<Mdr<double>>() && accepted<Mdr<float, Effects<kAll>>>() && accepted<Mdr<double, Effects<kNone>>>() &&
+static_assert(accepted<Mdr<double>>() && accepted<Mdr<float, Effects<kAll>>>() &&
+                  accepted<Mdr<double, Effects<kNone>>>() &&
                   accepted<Mdr<double, Effects<kPlasticity | kRadiusGrowth | kFriction>>>(),
               "Mdr");
 
@@ -49,7 +51,8 @@ struct Complete {
   static constexpr int normal_history_size = 0;
   static constexpr int history_size = 3;
   int nmat = 1;
-  KOKKOS_INLINE_FUNCTION NormalForce<double> normal(const ContactGeometry<double>&, const HistoryRow<double, D>&) const {
+  KOKKOS_INLINE_FUNCTION NormalForce<double> normal(const ContactGeometry<double>&,
+                                                    const HistoryRow<double, D>&) const {
     return {};
   }
 };
@@ -93,10 +96,12 @@ static_assert(!detail::has_normal<NoNormal, double, D>::value && !is_contact_mod
 static_assert(!detail::has_normal<NonConstNormal, double, D>::value, "normal() must be const");
 static_assert(!detail::has_normal<WrongResult, double, D>::value, "normal() must return NormalForce<T>");
 static_assert(!detail::has_effects<NoEffects>::value && !is_contact_model<NoEffects, double, D>::value, "no effects");
-static_assert(!detail::has_normal_history_size<NoHistorySizes>::value && !detail::has_history_size<NoHistorySizes>::value &&
+static_assert(!detail::has_normal_history_size<NoHistorySizes>::value &&
+                  !detail::has_history_size<NoHistorySizes>::value &&
                   !is_contact_model<NoHistorySizes, double, D>::value,
               "no history sizes");
-static_assert(!detail::history_sizes_fit<NoRoomForFriction>::value && !is_contact_model<NoRoomForFriction, double, D>::value,
+static_assert(!detail::history_sizes_fit<NoRoomForFriction>::value &&
+                  !is_contact_model<NoRoomForFriction, double, D>::value,
               "history_size without the tangential fields");
 static_assert(!detail::has_nmat<NoNmat>::value && !is_contact_model<NoNmat, double, D>::value, "no nmat");
 // the particles' T must be the law's: Complete is a double law

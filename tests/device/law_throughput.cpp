@@ -26,8 +26,14 @@ namespace {
 // The cohesive polymer powder of bench/bench_model_cost.cpp (Nan Table 2's Ning particle, R = 1 mm).
 Material powder() {
   Material m;
-  m.name = "powder"; m.youngs_modulus = 1.2e9; m.poisson_ratio = 0.3; m.density = 1000;
-  m.restitution = 0.81; m.friction = 0.3; m.surface_energy = 0.2; m.yield_stress = 35.3e6;
+  m.name = "powder";
+  m.youngs_modulus = 1.2e9;
+  m.poisson_ratio = 0.3;
+  m.density = 1000;
+  m.restitution = 0.81;
+  m.friction = 0.3;
+  m.surface_energy = 0.2;
+  m.yield_stress = 35.3e6;
   return m;
 }
 
@@ -71,8 +77,8 @@ Row measure(const char* law, Model model, double contacts, double min_seconds) {
     ++passes;
   } while (timer.seconds() < min_seconds || passes < 3);
   const double s = timer.seconds();
-  return {law, sizeof(T) == 8 ? "double" : "float", long(pk.contacts.count), long(pk.particles.n), passes, s,
-          double(pk.contacts.count) * passes / s};
+  return {law, sizeof(T) == 8 ? "double" : "float",   long(pk.contacts.count), long(pk.particles.n), passes,
+          s,   double(pk.contacts.count) * passes / s};
 }
 
 constexpr unsigned FD = kFriction | kDamping;
@@ -121,7 +127,10 @@ int main(int argc, char** argv) {
     std::printf("| %s | %s | %ld | %.3g |\n", r.law.c_str(), r.scalar.c_str(), r.contacts, r.contacts_per_s);
   if (!json.empty()) {
     FILE* f = std::fopen(json.c_str(), "w");
-    if (!f) { std::perror(json.c_str()); return 1; }
+    if (!f) {
+      std::perror(json.c_str());
+      return 1;
+    }
     std::fprintf(f, "{\"backend\": \"%s\", \"results\": [\n", Kokkos::DefaultExecutionSpace::name());
     for (size_t k = 0; k < rows.size(); ++k) {
       const Row& r = rows[k];

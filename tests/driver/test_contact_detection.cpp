@@ -102,26 +102,30 @@ Walls<double, D> box_walls(double L) {
 // Device-side edits (in named functions: CUDA forbids device lambdas inside lambdas).
 template <class D>
 void shift_particle(const Particles<double, D>& p, int i, int d, double by) {
-  Kokkos::parallel_for(Kokkos::RangePolicy<typename D::execution_space>(0, 1), KOKKOS_LAMBDA(int) { p.x(i, d) += by; });
+  Kokkos::parallel_for(
+      Kokkos::RangePolicy<typename D::execution_space>(0, 1), KOKKOS_LAMBDA(int) { p.x(i, d) += by; });
 }
 template <class D>
 void grow_particle(const Particles<double, D>& p, int i, double by) {
-  Kokkos::parallel_for(Kokkos::RangePolicy<typename D::execution_space>(0, 1), KOKKOS_LAMBDA(int) { p.radius(i) += by; });
+  Kokkos::parallel_for(
+      Kokkos::RangePolicy<typename D::execution_space>(0, 1), KOKKOS_LAMBDA(int) { p.radius(i) += by; });
 }
 template <class D>
 void shift_wall(const Walls<double, D>& w, int k, int d, double by) {
-  Kokkos::parallel_for(Kokkos::RangePolicy<typename D::execution_space>(0, 1), KOKKOS_LAMBDA(int) { w.point(k, d) += by; });
+  Kokkos::parallel_for(
+      Kokkos::RangePolicy<typename D::execution_space>(0, 1), KOKKOS_LAMBDA(int) { w.point(k, d) += by; });
 }
 // Writes each contact's identity (global ids, or gid and -1 - wall) into its history row.
 template <class D>
 void tag_history(const ContactList<D>& c, const ContactHistory<double, D>& hist, const Particles<double, D>& pp,
                  bool walls) {
   auto d = hist.data;
-  Kokkos::parallel_for(Kokkos::RangePolicy<typename D::execution_space>(0, c.count), KOKKOS_LAMBDA(int k) {
-    d(k, 0) = double(pp.gid(c.first(k)));
-    d(k, 1) = walls ? -1.0 - c.second(k) : double(pp.gid(c.second(k)));
-    d(k, 2) = 0.5;
-  });
+  Kokkos::parallel_for(
+      Kokkos::RangePolicy<typename D::execution_space>(0, c.count), KOKKOS_LAMBDA(int k) {
+        d(k, 0) = double(pp.gid(c.first(k)));
+        d(k, 1) = walls ? -1.0 - c.second(k) : double(pp.gid(c.second(k)));
+        d(k, 2) = 0.5;
+      });
 }
 
 }  // namespace
@@ -167,7 +171,8 @@ TEMPLATE_LIST_TEST_CASE("wall contacts are the particles within R + skin of each
   std::set<std::pair<int, int>> expected;
   for (int i = 0; i < h.n(); ++i)
     for (int k = 0; k < 3; ++k) {
-      const double dist = (h.x[i] - pt(k, 0)) * nr(k, 0) + (h.y[i] - pt(k, 1)) * nr(k, 1) + (h.z[i] - pt(k, 2)) * nr(k, 2);
+      const double dist =
+          (h.x[i] - pt(k, 0)) * nr(k, 0) + (h.y[i] - pt(k, 1)) * nr(k, 1) + (h.z[i] - pt(k, 2)) * nr(k, 2);
       if (dist < h.r[i] + skin) expected.insert({i, k});
     }
   const auto got = list_pairs(list);

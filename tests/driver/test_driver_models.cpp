@@ -40,9 +40,9 @@ std::string press_scene(const std::string& model, const std::string& material, d
          "\n[[particles.list]]\nposition = [0, 0, 0]\nradius = " + num(R) +
          "\nmaterial = \"ball\"\ndriven = true\n[[walls]]\nname = \"floor\"\npoint = [0, 0, " + num(-R) +
          "]\nnormal = [0, 0, 1]\nmaterial = \"plate\"\nmotion = [{duration = " + num(n_load * dt) +
-         ", velocity = [0, 0, " + num(v) + "]}, {duration = " + num(n_unload * dt) + ", velocity = [0, 0, " +
-         num(-v) + "]}]\n[run]\ndt = " + num(dt) + "\nsteps = " + std::to_string(n_load + n_unload) +
-         "\noutput_interval = 1\n" + run_extra;
+         ", velocity = [0, 0, " + num(v) + "]}, {duration = " + num(n_unload * dt) + ", velocity = [0, 0, " + num(-v) +
+         "]}]\n[run]\ndt = " + num(dt) + "\nsteps = " + std::to_string(n_load + n_unload) + "\noutput_interval = 1\n" +
+         run_extra;
 }
 
 double min_of(const std::vector<double>& v) { return *std::min_element(v.begin(), v.end()); }
@@ -105,7 +105,10 @@ TEST_CASE("nan2022 in the driver: pull-off f_cp and detachment at alpha_jp", "[d
     SECTION(plastic ? "plastic" : "elastic") {
       const double load = plastic ? 2e-5 : 2e-6;
       Material ball;
-      ball.name = "ball"; ball.youngs_modulus = 1e8; ball.poisson_ratio = 0.3; ball.density = 1000;
+      ball.name = "ball";
+      ball.youngs_modulus = 1e8;
+      ball.poisson_ratio = 0.3;
+      ball.density = 1000;
       ball.surface_energy = 0.5;
       std::string mat = "youngs_modulus = 1e8\npoisson_ratio = 0.3\nsurface_energy = 0.5";
       std::string model = "name = \"nan2022\"";
@@ -119,15 +122,18 @@ TEST_CASE("nan2022 in the driver: pull-off f_cp and detachment at alpha_jp", "[d
         model += "\nk_el_from = \"stiffness_pressure\"\nstiffness_pressure = 3.2e6";
       }
       Material plate;
-      plate.name = "plate"; plate.rigid = true;
+      plate.name = "plate";
+      plate.rigid = true;
       const Nan2022PairConstants<double> pc = nan2022_pair_constants(ball, plate, opt);
       const Nan2022ContactConstants<double> cc = nan2022_contact_constants<double>(pc, R);
       REQUIRE(cc.yields == plastic);
       if (plastic) REQUIRE(cc.alpha_y < 0.5 * load);
       const Nan2022Unloading<double> u = nan2022_unloading(cc, plastic ? load : 0.0, pc.unloading_law, pc.pull_off_law);
       REQUIRE(u.alpha_jp > -5e-6);
-      if (plastic) REQUIRE(u.alpha_jp > 0.0);
-      else REQUIRE(u.alpha_jp < -10 * inc);
+      if (plastic)
+        REQUIRE(u.alpha_jp > 0.0);
+      else
+        REQUIRE(u.alpha_jp < -10 * inc);
 
       const fs::path dir = fresh_out_dir("nan");
       const RunSummary s = run_scene_text(press_scene(model, mat, R, load, load + 5e-6, inc), dir);
@@ -139,8 +145,10 @@ TEST_CASE("nan2022 in the driver: pull-off f_cp and detachment at alpha_jp", "[d
       const double f_ce = 1.5 * kPi * 0.5 * R;
       CHECK(min_of(f) >= -u.f_cp * (1 + 1e-9));
       CHECK(min_of(f) <= -u.f_cp + u.k_e * inc);
-      if (plastic) CHECK(u.f_cp > 1.05 * f_ce);  // plastic flattening raised the pull-off
-      else CHECK(u.f_cp == Approx(f_ce).epsilon(1e-12));
+      if (plastic)
+        CHECK(u.f_cp > 1.05 * f_ce);  // plastic flattening raised the pull-off
+      else
+        CHECK(u.f_cp == Approx(f_ce).epsilon(1e-12));
       const std::size_t k = last_touch(f);
       REQUIRE(k + 1 < f.size());
       CHECK(d[k] >= u.alpha_jp - 1.5 * inc);
@@ -151,7 +159,8 @@ TEST_CASE("nan2022 in the driver: pull-off f_cp and detachment at alpha_jp", "[d
   }
 }
 
-TEST_CASE("mdr in the driver: Hertz at small overlap, yield, residual overlap and radius growth", "[driver][models][mdr]") {
+TEST_CASE("mdr in the driver: Hertz at small overlap, yield, residual overlap and radius growth",
+          "[driver][models][mdr]") {
   // R_o = 1 mm, E = 1e8 Pa, nu = 0.3, Y = 2e6 Pa (E/Y = 50), rigid flat; to delta/R = 0.1 and back.
   const double R = 1e-3, E = 1e8, nu = 0.3;
   const double Ee = E / (1 - nu * nu);
@@ -194,7 +203,8 @@ TEST_CASE("mdr in the driver: Hertz at small overlap, yield, residual overlap an
   CHECK(residual[1] == Approx(residual[0]).epsilon(1e-2));
 }
 
-TEST_CASE("mdr in the driver: elastic adhesive pull-off equals JKR, skin covers the adhesive range", "[driver][models][mdr]") {
+TEST_CASE("mdr in the driver: elastic adhesive pull-off equals JKR, skin covers the adhesive range",
+          "[driver][models][mdr]") {
   // E R / Delta gamma ~ 2.2e4 (Fig. 13(a)): R = 1 mm, E = 1e8 Pa, nu = 0.3, Delta gamma = 5 J/m^2,
   // no yield. xi = 1 (displacement control). The force minimum along the path is the JKR
   // pull-off 1.5 pi Delta gamma R (MDR kernel tests: within 1%).
@@ -221,10 +231,12 @@ TEST_CASE("adhesive models: the skin must exceed the adhesive range", "[driver][
   for (const std::string model : {"mdr", "jkr", "nan2022"}) {
     INFO(model);
     const std::string extra_model = model == "nan2022" ? "\nk_el_from = \"fixed\"\nk_el = 1e4" : "";
-    const Scene ok = parse_scene_string(press_scene("name = \"" + model + "\"" + extra_model, mat, 1e-3, 1e-5, 1e-5, 1e-7));
+    const Scene ok =
+        parse_scene_string(press_scene("name = \"" + model + "\"" + extra_model, mat, 1e-3, 1e-5, 1e-5, 1e-7));
     CHECK(ok.run.skin == Approx(2e-4));
     try {
-      parse_scene_string(press_scene("name = \"" + model + "\"" + extra_model, mat, 1e-3, 1e-5, 1e-5, 1e-7, "skin = 1e-9\n"));
+      parse_scene_string(
+          press_scene("name = \"" + model + "\"" + extra_model, mat, 1e-3, 1e-5, 1e-5, 1e-7, "skin = 1e-9\n"));
       FAIL("a skin below the adhesive range was accepted");
     } catch (const SceneError& e) {
       const std::string m = e.what();
@@ -246,20 +258,21 @@ TEST_CASE("model keys are range-checked on parse", "[driver][models][scene]") {
   auto message = [&](const std::string& model_block) {
     try {
       parse_scene_string(press_scene(model_block, mat, 1e-3, 1e-5, 1e-5, 1e-7));
-    } catch (const SceneError& e) {
-      return std::string(e.what());
-    }
+    } catch (const SceneError& e) { return std::string(e.what()); }
     return std::string("accepted");
   };
-  CHECK(message("name = \"mdr\"\nxi = 2") == "model.xi = 2 is outside the valid set {1, 3} (MDR (15): 1 displacement "
-                                             "control, 3 force control)");
+  CHECK(message("name = \"mdr\"\nxi = 2") ==
+        "model.xi = 2 is outside the valid set {1, 3} (MDR (15): 1 displacement "
+        "control, 3 force control)");
   CHECK(message("name = \"mdr\"\nxi = 3") == "accepted");
-  CHECK(message("name = \"mdr\"\ngrowth_rule = \"sometimes\"").find(
-            "model.growth_rule = \"sometimes\" is not valid (valid: \"plastic_loading\", \"all_contacts\")") == 0);
+  CHECK(message("name = \"mdr\"\ngrowth_rule = \"sometimes\"")
+            .find("model.growth_rule = \"sometimes\" is not valid (valid: \"plastic_loading\", \"all_contacts\")") ==
+        0);
   CHECK(message("name = \"mdr\"\ngrowth_rule = 1").find("model.growth_rule must be a string") == 0);
   CHECK(message("name = \"mdr\"\nradius_cap = 0.5").find("model.radius_cap = 0.5 is outside") == 0);
-  CHECK(message("name = \"mdr\"\neffects = [\"radius_growth\"]").find("model.effects: radius_growth needs plasticity") ==
-        0);
+  CHECK(
+      message("name = \"mdr\"\neffects = [\"radius_growth\"]").find("model.effects: radius_growth needs plasticity") ==
+      0);
   CHECK(message("name = \"nan2022\"\nk_p_ratio = 1.5").find("model.k_p_ratio = 1.5 is outside") == 0);
   CHECK(message("name = \"nan2022\"\nunloading_law = \"plastic_offset\"\npull_off_law = \"stiffness_power\"") ==
         "accepted");
@@ -270,6 +283,7 @@ TEST_CASE("model keys are range-checked on parse", "[driver][models][scene]") {
         (kPlasticity | kRadiusGrowth));
   CHECK(parse_scene_string(press_scene("name = \"mdr\"\neffects = [\"plasticity\"]", mat, 1e-3, 1e-5, 1e-5, 1e-7))
             .model.effects == kPlasticity);
-  CHECK(parse_scene_string(press_scene("name = \"nan2022\"", mat, 1e-3, 1e-5, 1e-5, 1e-7)).model.effects == kPlasticity);
+  CHECK(parse_scene_string(press_scene("name = \"nan2022\"", mat, 1e-3, 1e-5, 1e-5, 1e-7)).model.effects ==
+        kPlasticity);
   CHECK(parse_scene_string(press_scene("name = \"jkr\"", mat, 1e-3, 1e-5, 1e-5, 1e-7)).model.notes.size() == 1);
 }

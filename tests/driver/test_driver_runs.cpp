@@ -22,8 +22,8 @@ namespace {
 
 fs::path fresh_dir(const std::string& tag) {
   static int counter = 0;
-  const fs::path dir = fs::temp_directory_path() / ("epac-driver-run-" + std::to_string(getpid()) + "-" + tag + "-" +
-                                                     std::to_string(counter++));
+  const fs::path dir = fs::temp_directory_path() /
+                       ("epac-driver-run-" + std::to_string(getpid()) + "-" + tag + "-" + std::to_string(counter++));
   fs::remove_all(dir);  // a leftover of an earlier process with the same pid would be refused
   return dir;
 }
@@ -71,7 +71,8 @@ TEST_CASE("a head-on linear-spring collision rebounds with the restitution coeff
 [materials.a]
 youngs_modulus = 1e7
 density = 2500
-restitution = )" + std::to_string(e0) + R"(
+restitution = )" + std::to_string(e0) +
+                           R"(
 [model]
 name = "linear_spring"
 stiffness = 2000.0

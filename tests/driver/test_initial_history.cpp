@@ -69,8 +69,7 @@ nlohmann::json read_json(const std::filesystem::path& p) {
 
 }  // namespace
 
-TEST_CASE("driver: a packing at 0.2 R starts from a quasi-static load and stays compact",
-          "[driver][initial_history]") {
+TEST_CASE("driver: a packing at 0.2 R starts from a quasi-static load and stays compact", "[driver][initial_history]") {
   const auto dir = fresh_out_dir("initial-history");
   const driver::RunSummary s = run_scene_text(packed_scene(""), dir);  // default: from_overlaps
   CHECK(s.initial_history.mode == "from_overlaps");
@@ -144,8 +143,8 @@ std::string touching_scene(const std::string& model, const std::string& material
                            bool lattice) {
   std::ostringstream s;
   s.precision(17);
-  s << "[materials.glass]\nyoungs_modulus = 1e9\npoisson_ratio = 0.3\ndensity = 2500\n" << material_extra
-    << "\n[model]\nname = \"" << model << "\"\n[particles]\nallow_overlap = false\n";
+  s << "[materials.glass]\nyoungs_modulus = 1e9\npoisson_ratio = 0.3\ndensity = 2500\n"
+    << material_extra << "\n[model]\nname = \"" << model << "\"\n[particles]\nallow_overlap = false\n";
   const double R = 1e-3;
   const int ny = lattice ? n : 1, nz = lattice ? n : 1;
   for (int a = 0; a < n; ++a)
@@ -168,20 +167,22 @@ TEST_CASE("driver: touching starts run at any offset, in both precisions, for la
     const char* model;
     const char* material_extra;
   };
-  const Law laws[] = {{"hertz_mindlin", ""},                          // no history fields
-                      {"hertz_mindlin", "friction = 0.3\n"},          // tangential history
+  const Law laws[] = {{"hertz_mindlin", ""},                                // no history fields
+                      {"hertz_mindlin", "friction = 0.3\n"},                // tangential history
                       {"mdr", "yield_stress = 1e7\nrestitution = 0.5\n"}};  // normal history, growth
   for (const Law& law : laws)
     for (const char* precision : {"double", "float"})
       for (const double offset : {0.0, 0.1, 1.0, 5.0})
         for (const bool lattice : {false, true}) {
           const std::string what = std::string(law.model) + (law.material_extra[0] ? " +history" : "") + ", " +
-                                   precision + ", x0 = " + std::to_string(offset) + (lattice ? ", 4^3 lattice" : ", pair");
+                                   precision + ", x0 = " + std::to_string(offset) +
+                                   (lattice ? ", 4^3 lattice" : ", pair");
           INFO(what);
           const auto dir = fresh_out_dir("touching");
           driver::RunSummary s;
-          REQUIRE_NOTHROW(s = run_scene_text(touching_scene(law.model, law.material_extra, offset, lattice ? 4 : 2, lattice),
-                                             dir, precision));
+          REQUIRE_NOTHROW(
+              s = run_scene_text(touching_scene(law.model, law.material_extra, offset, lattice ? 4 : 2, lattice), dir,
+                                 precision));
           CHECK(s.status == "completed");
           CHECK(s.steps_completed == 20);
           // round-off overlaps only: at most a few ulps of the largest coordinate

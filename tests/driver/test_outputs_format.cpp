@@ -51,8 +51,9 @@ Vtp parse_vtp(const std::string& text) {
   REQUIRE(std::regex_search(text, m, std::regex("<Piece NumberOfPoints=\"(\\d+)\" NumberOfVerts=\"(\\d+)\"")));
   v.points = std::stol(m[1]);
   v.verts = std::stol(m[2]);
-  const std::regex array("<DataArray type=\"(\\w+)\" Name=\"(\\w+)\"(?: NumberOfComponents=\"(\\d)\")? format=\"ascii\">"
-                         "([^<]*)</DataArray>");
+  const std::regex array(
+      "<DataArray type=\"(\\w+)\" Name=\"(\\w+)\"(?: NumberOfComponents=\"(\\d)\")? format=\"ascii\">"
+      "([^<]*)</DataArray>");
   for (auto it = std::sregex_iterator(text.begin(), text.end(), array); it != std::sregex_iterator(); ++it) {
     const auto& a = *it;
     std::vector<double> vals;

@@ -186,13 +186,15 @@ periodic = [true, false, false]
 allow_overlap = true
 
 [[particles.list]]
-position = [)" + std::to_string(xa) + R"(, 0.005, 0.005]
+position = [)" +
+           std::to_string(xa) + R"(, 0.005, 0.005]
 radius = 0.001
 material = "bead"
 velocity = [0.01, 0.002, 0.0]
 
 [[particles.list]]
-position = [)" + std::to_string(xb) + R"(, 0.005, 0.005]
+position = [)" +
+           std::to_string(xb) + R"(, 0.005, 0.005]
 radius = 0.001
 material = "bead"
 velocity = [-0.01, 0.0, 0.0]
@@ -229,7 +231,8 @@ particle_output = true
   std::filesystem::remove_all(d2);
 }
 
-TEST_CASE("box deformation: edge after k steps, affine positions, held after the last step", "[driver][periodic][deform]") {
+TEST_CASE("box deformation: edge after k steps, affine positions, held after the last step",
+          "[driver][periodic][deform]") {
   // Spheres far apart at rest (no contacts, no gravity): positions move only with the box.
   const double L0 = 0.02, lo = -0.004;
   const std::string text = kBead + R"(
@@ -355,7 +358,8 @@ cells = [4, 3, 3]
 radius_min = 0.94e-3
 radius_max = 0.99e-3
 material = "bead"
-)" + extra + R"(
+)" + extra +
+           R"(
 [run]
 dt = 1.0e-6
 steps = 1
@@ -372,7 +376,8 @@ steps = 1
       for (int cx = 0; cx < 4; ++cx)
         for (int b = 0; b < 4; ++b, ++k) {
           const double cell[3] = {double(cx), double(cy), double(cz)};
-          for (int d = 0; d < 3; ++d) CHECK(s.particles[k].position[d] == Approx(a * (cell[d] + basis[b][d])).margin(1e-15));
+          for (int d = 0; d < 3; ++d)
+            CHECK(s.particles[k].position[d] == Approx(a * (cell[d] + basis[b][d])).margin(1e-15));
           CHECK(s.particles[k].radius >= 0.94e-3);
           CHECK(s.particles[k].radius <= 0.99e-3);
         }
@@ -412,12 +417,14 @@ steps = 1
   CHECK(max_dev > 1.0e-6);
 }
 
-TEST_CASE("bad [box], [box.deform] and [particles.lattice] values are rejected", "[driver][scene][validation][periodic]") {
+TEST_CASE("bad [box], [box.deform] and [particles.lattice] values are rejected",
+          "[driver][scene][validation][periodic]") {
   struct Case {
     std::string box, lattice, walls, expect;
   };
   const std::string box_ok = "[box]\nlo = [0.0, 0.0, 0.0]\nhi = [0.02, 0.02, 0.02]\nperiodic = [true, true, false]\n";
-  const std::string lat_ok = "[particles.lattice]\na = 0.003\ncells = [6, 6, 2]\nradius_min = 0.001\nmaterial = \"bead\"\n";
+  const std::string lat_ok =
+      "[particles.lattice]\na = 0.003\ncells = [6, 6, 2]\nradius_min = 0.001\nmaterial = \"bead\"\n";
   const std::vector<Case> cases = {
       {"[box]\nlo = [0.0, 0.0, 0.0]\nhi = [0.004, 0.02, 0.02]\nperiodic = [true, false, false]\n",
        "[[particles.list]]\nposition = [0.002, 0.01, 0.01]\nradius = 0.001\nmaterial = \"bead\"\n", "",
@@ -427,10 +434,12 @@ TEST_CASE("bad [box], [box.deform] and [particles.lattice] values are rejected",
       {box_ok + "[box.deform]\nscale = [-0.9, 1.0, 1.0]\nsteps = 10\n", lat_ok, "", "box.deform.scale[0] = -0.9"},
       {box_ok + "[box.deform]\nscale = [0.9, 1.0, 1.0]\nsteps = 0\n", lat_ok, "", "box.deform.steps = 0"},
       {box_ok + "[box.deform]\nscale = [0.2, 1.0, 1.0]\nsteps = 10\n", lat_ok, "", "periodic edge along x"},
-      {box_ok + "[box.deform]\nscale = [0.9, 1.0, 1.0]\nsteps = 10\nrate = 2\n", lat_ok, "", "unknown key 'rate' in [box.deform]"},
+      {box_ok + "[box.deform]\nscale = [0.9, 1.0, 1.0]\nsteps = 10\nrate = 2\n", lat_ok, "",
+       "unknown key 'rate' in [box.deform]"},
       {box_ok + "size = 3\n", lat_ok, "", "unknown key 'size' in [box]"},
       {"[box]\nlo = [0.0, 0.0, 0.0]\nhi = [0.02, 0.0, 0.02]\n", lat_ok, "", "box.hi[1] = 0"},
-      {"[box]\nlo = [0.0, 0.0, 0.0]\nhi = [0.02, 0.02, 0.02]\nperiodic = [true, 1, false]\n", lat_ok, "", "box.periodic[1]"},
+      {"[box]\nlo = [0.0, 0.0, 0.0]\nhi = [0.02, 0.02, 0.02]\nperiodic = [true, 1, false]\n", lat_ok, "",
+       "box.periodic[1]"},
       {box_ok, lat_ok + "type = \"bcc\"\n", "", "particles.lattice.type = \"bcc\""},
       {box_ok, "[particles.lattice]\na = 0.003\ncells = [6, 0, 2]\nradius_min = 0.001\nmaterial = \"bead\"\n", "",
        "particles.lattice.cells[1] = 0"},
@@ -440,7 +449,8 @@ TEST_CASE("bad [box], [box.deform] and [particles.lattice] values are rejected",
        "overlap"},
   };
   for (const auto& c : cases) {
-    const std::string text = kBead + c.box + "\n[particles]\n" + c.lattice + "\n" + c.walls + "\n[run]\ndt = 1e-6\nsteps = 1\n";
+    const std::string text =
+        kBead + c.box + "\n[particles]\n" + c.lattice + "\n" + c.walls + "\n[run]\ndt = 1e-6\nsteps = 1\n";
     INFO(text);
     try {
       parse_scene_string(text);
@@ -554,7 +564,8 @@ dt = 5.0e-6
 steps = 600
 output_interval = 200
 particle_output = true
-spatial_sort = )" + std::string(sort ? "true" : "false") + "\n";
+spatial_sort = )" +
+             std::string(sort ? "true" : "false") + "\n";
     };
     const auto d1 = test::fresh_out_dir("sorted");
     const auto d2 = test::fresh_out_dir("unsorted");
@@ -614,7 +625,8 @@ steps = 700
 output_interval = 350
 skin = 0.00015
 particle_output = true
-spatial_sort = )" + std::string(sort ? "true" : "false") + "\n";
+spatial_sort = )" +
+             std::string(sort ? "true" : "false") + "\n";
     };
     const auto d1 = test::fresh_out_dir("mdr_sorted");
     const auto d2 = test::fresh_out_dir("mdr_unsorted");
@@ -622,7 +634,8 @@ spatial_sort = )" + std::string(sort ? "true" : "false") + "\n";
     const auto s2 = run_text(scene(false), d2);
     CHECK(s1.rebuilds > 2);
     CHECK(test::counter_of(s1, "mdr_max_radius_ratio") > 1.0);  // the radii did grow
-    CHECK(test::counter_of(s1, "mdr_max_radius_ratio") == Approx(test::counter_of(s2, "mdr_max_radius_ratio")).epsilon(1e-6));
+    CHECK(test::counter_of(s1, "mdr_max_radius_ratio") ==
+          Approx(test::counter_of(s2, "mdr_max_radius_ratio")).epsilon(1e-6));
     check_same_particles(d1, d2, 1e-6);
     std::filesystem::remove_all(d1);
     std::filesystem::remove_all(d2);

@@ -57,7 +57,9 @@ radius = 0.001
 material = "glass"
 velocity = [-0.1, 0, 0]
 [run]
-dt = )" << dt << "\nsteps = " << steps << "\n" << run_extra << "\n";
+dt = )"
+    << dt << "\nsteps = " << steps << "\n"
+    << run_extra << "\n";
   return s.str();
 }
 constexpr double kRayleigh = 8.6e-5;  // pi R sqrt(rho/G) / (0.1631 nu + 0.8766) of pair_scene [s]
@@ -199,9 +201,7 @@ TEST_CASE("a folder with another run's outputs is refused, and keeps them", "[dr
   std::string message;
   try {
     run(parse_scene_string(pair_scene(1e-6, 30)), options(dir));
-  } catch (const OutputFolderInUse& e) {
-    message = e.what();
-  }
+  } catch (const OutputFolderInUse& e) { message = e.what(); }
   INFO(message);
   CHECK(message.find(dir.string()) != std::string::npos);
   CHECK(message.find("summary.json") != std::string::npos);
@@ -228,7 +228,8 @@ TEST_CASE("a folder with another run's outputs is refused, and keeps them", "[dr
 TEST_CASE("option overwrite removes the earlier run's outputs, and only those", "[driver][outputs][integrity]") {
   const fs::path dir = fresh_out_dir("overwrite");
   // first run: contacts, particles and snapshots besides the timeseries
-  run(parse_scene_string(pair_scene(1e-6, 20, "contact_output = true\nparticle_output = true\nsnapshot_format = \"vtp\"")),
+  run(parse_scene_string(
+          pair_scene(1e-6, 20, "contact_output = true\nparticle_output = true\nsnapshot_format = \"vtp\"")),
       options(dir));
   REQUIRE(fs::exists(dir / "contacts.csv"));
   REQUIRE(fs::exists(dir / "snapshots"));
@@ -252,7 +253,8 @@ TEST_CASE("option overwrite removes the earlier run's outputs, and only those", 
 TEST_CASE("a completed run leaves whole files under their names and status completed", "[driver][outputs][integrity]") {
   const fs::path dir = fresh_out_dir("completed");
   // 200 steps close the 0.02 mm gap at 0.2 m/s after 100: contacts.csv has rows
-  run(parse_scene_string(pair_scene(1e-6, 200, "contact_output = true\nsnapshot_format = \"vtp\"\noutput_interval = 50")),
+  run(parse_scene_string(
+          pair_scene(1e-6, 200, "contact_output = true\nsnapshot_format = \"vtp\"\noutput_interval = 50")),
       options(dir));
   CHECK(partial_files(dir).empty());
   const auto j = summary_of(dir);
@@ -280,16 +282,14 @@ TEST_CASE("a time step far too large is stopped by the divergence watch", "[driv
     std::string message;
     try {
       run(parse_scene_string(pair_scene(20 * kRayleigh, 200)), options(dir));
-    } catch (const DivergedError& e) {
-      message = e.what();
-    }
+    } catch (const DivergedError& e) { message = e.what(); }
     INFO(message);
     REQUIRE_FALSE(message.empty());
     const auto j = summary_of(dir);
     CHECK(j["status"] == "diverged");
     const std::string reason = j["status_reason"];
-    for (const char* part : {"particle ", "global id", "particles.list[", "|v| dt = ", "above the bound 0.5 R",
-                             "Rayleigh"})
+    for (const char* part :
+         {"particle ", "global id", "particles.list[", "|v| dt = ", "above the bound 0.5 R", "Rayleigh"})
       CHECK(reason.find(part) != std::string::npos);
     CHECK(message.find(reason) != std::string::npos);
     const long done = j["steps_completed"];
@@ -310,7 +310,8 @@ TEST_CASE("the divergence watch names a non-finite particle", "[driver][divergen
   CHECK(summary_of(dir)["steps_completed"] == 0);
 }
 
-TEST_CASE("SIGINT and SIGTERM stop epac-run after a whole step with status interrupted", "[driver][signals][integrity]") {
+TEST_CASE("SIGINT and SIGTERM stop epac-run after a whole step with status interrupted",
+          "[driver][signals][integrity]") {
   for (const int sig : {SIGINT, SIGTERM}) {
     SECTION(sig == SIGINT ? "SIGINT" : "SIGTERM") {
       const fs::path dir = fresh_out_dir(sig == SIGINT ? "sigint" : "sigterm");
@@ -403,8 +404,9 @@ TEST_CASE("a run under coreutils timeout ends with whole outputs", "[driver][sig
       const fs::path out = dir / "out";
       // 10 s: long enough for the run to be stepping on a loaded 2-core machine, far shorter
       // than kLongScene. timeout itself leads a process group, as it does from a shell.
-      Child c = spawn_program("timeout", {"-s", sig == SIGINT ? "INT" : "TERM", "10", EPAC_RUN_EXE, scene.string(),
-                                          "--out", out.string(), "--threads", "1", "--quiet"},
+      Child c = spawn_program("timeout",
+                              {"-s", sig == SIGINT ? "INT" : "TERM", "10", EPAC_RUN_EXE, scene.string(), "--out",
+                               out.string(), "--threads", "1", "--quiet"},
                               dir, true);
       const int rc = wait_for(c);
       INFO("stderr: " << slurp(c.err));
@@ -429,7 +431,8 @@ TEST_CASE("epac-run exit statuses: used folder 2, --overwrite 0, diverged 3", "[
   CHECK(summary_of(dir / "out_huge")["status"] == "diverged");
 }
 
-TEST_CASE("option threads above the machine's CPUs is clamped with a warning and does not crash", "[driver][cli][threads]") {
+TEST_CASE("option threads above the machine's CPUs is clamped with a warning and does not crash",
+          "[driver][cli][threads]") {
   cpu_set_t set;
   REQUIRE(sched_getaffinity(0, sizeof set, &set) == 0);
   const int cpus = CPU_COUNT(&set);

@@ -34,7 +34,8 @@ std::string base_scene(const std::string& material_extra, const std::string& sec
   const std::string material = material_extra.empty() ? kGlass : material_extra;
   return R"(
 [materials.glass]
-)" + material + R"(
+)" + material +
+         R"(
 
 [materials.wall]
 rigid = true
@@ -45,18 +46,21 @@ radius = 0.001
 material = "glass"
 
 [[particles.list]]
-)" + second_particle + R"(
+)" + second_particle +
+         R"(
 material = "glass"
 
 [[walls]]
 point = [0, 0, 0]
-normal = )" + wall_normal + R"(
+normal = )" +
+         wall_normal + R"(
 material = "wall"
 
 [run]
 dt = 1e-6
 steps = 10
-)" + run_extra + "\n";
+)" + run_extra +
+         "\n";
 }
 
 const std::string kSecond = "position = [0.003, 0, 0.002]\nradius = 0.001";
@@ -80,50 +84,71 @@ struct BadCase {
 
 std::vector<BadCase> bad_cases() {
   return {
-      {"negative modulus", base_scene(glass_with("youngs_modulus", "youngs_modulus = -1.0e7"), kSecond),
+      {"negative modulus",
+       base_scene(glass_with("youngs_modulus", "youngs_modulus = -1.0e7"), kSecond),
        {"materials.glass.youngs_modulus", "= -1e+07", "(0, inf)"}},
-      {"Poisson ratio 0.5", base_scene(glass_with("poisson_ratio", "poisson_ratio = 0.5"), kSecond),
+      {"Poisson ratio 0.5",
+       base_scene(glass_with("poisson_ratio", "poisson_ratio = 0.5"), kSecond),
        {"materials.glass.poisson_ratio", "= 0.5", "(-1, 0.5)"}},
-      {"Poisson ratio above 0.5", base_scene(glass_with("poisson_ratio", "poisson_ratio = 0.7"), kSecond),
+      {"Poisson ratio above 0.5",
+       base_scene(glass_with("poisson_ratio", "poisson_ratio = 0.7"), kSecond),
        {"materials.glass.poisson_ratio", "= 0.7", "(-1, 0.5)"}},
-      {"radius 0", base_scene("", "position = [0.003, 0, 0.002]\nradius = 0.0"),
+      {"radius 0",
+       base_scene("", "position = [0.003, 0, 0.002]\nradius = 0.0"),
        {"particles.list[1].radius", "= 0", "[1e-07, 100]"}},
-      {"negative radius", base_scene("", "position = [0.003, 0, 0.002]\nradius = -0.001"),
+      {"negative radius",
+       base_scene("", "position = [0.003, 0, 0.002]\nradius = -0.001"),
        {"particles.list[1].radius", "= -0.001", "[1e-07, 100]"}},
-      {"NaN density", base_scene(glass_with("density", "density = nan"), kSecond), {"materials.glass.density", "= nan", "(0, inf)"}},
-      {"NaN position", base_scene("", "position = [0.003, 0, nan]\nradius = 0.001"),
+      {"NaN density",
+       base_scene(glass_with("density", "density = nan"), kSecond),
+       {"materials.glass.density", "= nan", "(0, inf)"}},
+      {"NaN position",
+       base_scene("", "position = [0.003, 0, nan]\nradius = 0.001"),
        {"particles.list[1].position[2]", "= nan", "[-1e+06, 1e+06]"}},
       {"NaN skin", base_scene("", kSecond, "skin = nan"), {"run.skin", "= nan", "[0, inf)"}},
       {"NaN time step", with_dt("nan"), {"run.dt", "= nan", "(0, inf)"}},
-      {"unknown material key", base_scene(glass_with("densty", "densty = 2500"), kSecond),
+      {"unknown material key",
+       base_scene(glass_with("densty", "densty = 2500"), kSecond),
        {"unknown key 'densty'", "[materials.glass]", "valid keys:", "density"}},
       {"unknown run key", base_scene("", kSecond, "stepz = 3"), {"unknown key 'stepz'", "[run]"}},
-      {"unknown particle key", base_scene("", kSecond + "\nradis = 0.001"),
+      {"unknown particle key",
+       base_scene("", kSecond + "\nradis = 0.001"),
        {"unknown key 'radis'", "[particles.list[1]]"}},
-      {"overlapping explicit particles", base_scene("", "position = [0.0015, 0, 0.002]\nradius = 0.001"),
+      {"overlapping explicit particles",
+       base_scene("", "position = [0.0015, 0, 0.002]\nradius = 0.001"),
        {"particles.list[0] and particles.list[1] overlap by 0.0005", "R_i + R_j = 0.002", "allow_overlap"}},
-      {"zero wall normal", base_scene("", kSecond, "", "[0, 0, 0]"),
+      {"zero wall normal",
+       base_scene("", kSecond, "", "[0, 0, 0]"),
        {"walls[0].normal = [0, 0, 0]", "length 0", "(0, inf)"}},
       {"negative time step", with_dt("-1.0"), {"run.dt", "= -1", "(0, inf)"}},
       // Values inside the old (0, inf) / finite checks that ran into "the simulation diverged":
       // refused with the physical range, its unit and the line.
-      {"radius 1e-300", base_scene("", "position = [0.003, 0, 0.002]\nradius = 1e-300"),
+      {"radius 1e-300",
+       base_scene("", "position = [0.003, 0, 0.002]\nradius = 1e-300"),
        {"particles.list[1].radius = 1e-300", "[1e-07, 100]", "(m;", "[line 17]"}},
-      {"radius 1e300", base_scene("", "position = [0.003, 0, 0.002]\nradius = 1e300"),
+      {"radius 1e300",
+       base_scene("", "position = [0.003, 0, 0.002]\nradius = 1e300"),
        {"particles.list[1].radius = 1e+300", "[1e-07, 100]", "[line 17]"}},
-      {"density 1e-300", base_scene(glass_with("density", "density = 1e-300"), kSecond),
+      {"density 1e-300",
+       base_scene(glass_with("density", "density = 1e-300"), kSecond),
        {"materials.glass.density = 1e-300", "[0.1, 100000]", "kg/m^3", "[line 5]"}},
-      {"density 1e300", base_scene(glass_with("density", "density = 1e300"), kSecond),
+      {"density 1e300",
+       base_scene(glass_with("density", "density = 1e300"), kSecond),
        {"materials.glass.density = 1e+300", "[0.1, 100000]"}},
-      {"Young's modulus 1e300", base_scene(glass_with("youngs_modulus", "youngs_modulus = 1e300"), kSecond),
+      {"Young's modulus 1e300",
+       base_scene(glass_with("youngs_modulus", "youngs_modulus = 1e300"), kSecond),
        {"materials.glass.youngs_modulus = 1e+300", "[1000, 1e+13]", "Pa", "[line 3]"}},
-      {"gravity 1e300", "gravity = [0, 0, 1e300]\n" + base_scene("", kSecond),
+      {"gravity 1e300",
+       "gravity = [0, 0, 1e300]\n" + base_scene("", kSecond),
        {"gravity[2] = 1e+300", "[-100000, 100000]", "m/s^2", "[line 1]"}},
-      {"velocity 1e300", base_scene("", kSecond + "\nvelocity = [1e300, 0, 0]"),
+      {"velocity 1e300",
+       base_scene("", kSecond + "\nvelocity = [1e300, 0, 0]"),
        {"particles.list[1].velocity[0] = 1e+300", "[-10000, 10000]", "m/s"}},
-      {"angular velocity 1e300", base_scene("", kSecond + "\nangular_velocity = [0, -1e300, 0]"),
+      {"angular velocity 1e300",
+       base_scene("", kSecond + "\nangular_velocity = [0, -1e300, 0]"),
        {"particles.list[1].angular_velocity[1] = -1e+300", "[-1e+09, 1e+09]", "rad/s"}},
-      {"position 1e300", base_scene("", "position = [1e300, 0, 0.002]\nradius = 0.001"),
+      {"position 1e300",
+       base_scene("", "position = [1e300, 0, 0.002]\nradius = 0.001"),
        {"particles.list[1].position[0] = 1e+300", "[-1e+06, 1e+06]"}},
       {"wall point 1e300", with_wall_point("[0, 0, 1e300]"), {"walls[0].point[2] = 1e+300", "[-1e+06, 1e+06]"}},
   };
@@ -131,8 +156,8 @@ std::vector<BadCase> bad_cases() {
 
 fs::path fresh_dir(const std::string& tag) {
   static int counter = 0;
-  const fs::path dir = fs::temp_directory_path() / ("epac-driver-test-" + std::to_string(getpid()) + "-" + tag + "-" +
-                                                     std::to_string(counter++));
+  const fs::path dir = fs::temp_directory_path() /
+                       ("epac-driver-test-" + std::to_string(getpid()) + "-" + tag + "-" + std::to_string(counter++));
   fs::remove_all(dir);  // a leftover of an earlier process with the same pid would be refused
   return dir;
 }
@@ -145,9 +170,7 @@ TEST_CASE("bad scenes are rejected with key, value and range", "[driver][scene][
       std::string message;
       try {
         parse_scene_string(c.text, "bad.toml");
-      } catch (const ParameterError& e) {
-        message = e.what();
-      }
+      } catch (const ParameterError& e) { message = e.what(); }
       INFO("message: " << message);
       REQUIRE_FALSE(message.empty());
       for (const auto& part : c.must_contain) CHECK(message.find(part) != std::string::npos);

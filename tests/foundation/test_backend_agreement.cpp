@@ -15,8 +15,13 @@ TEMPLATE_TEST_CASE("OpenMP and Serial give the same forces on a 10k-contact pack
   using T = TestType;
   using DS = test::DeviceOf<Kokkos::Serial>;
   using DO = test::DeviceOf<Kokkos::OpenMP>;
-  Material m; m.name = "glass"; m.youngs_modulus = 70e9; m.poisson_ratio = 0.25; m.density = 2500;
-  m.restitution = 0.5; m.friction = 0.5;
+  Material m;
+  m.name = "glass";
+  m.youngs_modulus = 70e9;
+  m.poisson_ratio = 0.25;
+  m.density = 2500;
+  m.restitution = 0.5;
+  m.friction = 0.5;
   auto run = [&](auto dev) {
     using D = decltype(dev);
     using Model = HertzMindlin<T, Effects<kFriction | kDamping>, D>;

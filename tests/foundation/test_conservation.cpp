@@ -13,15 +13,24 @@ using namespace epac;
 namespace {
 Material glass(double e0, double mu) {
   Material m;
-  m.name = "glass"; m.youngs_modulus = 70e9; m.poisson_ratio = 0.25; m.density = 2500;
-  m.restitution = e0; m.friction = mu;
+  m.name = "glass";
+  m.youngs_modulus = 70e9;
+  m.poisson_ratio = 0.25;
+  m.density = 2500;
+  m.restitution = e0;
+  m.friction = mu;
   return m;
 }
-struct Totals { double p[3], L[3], ke; };
+struct Totals {
+  double p[3], L[3], ke;
+};
 template <class P>
 Totals totals(const P& p) {
-  auto x = test::to_host(p.x); auto v = test::to_host(p.v); auto w = test::to_host(p.omega);
-  auto m = test::to_host(p.mass); auto I = test::to_host(p.inertia);
+  auto x = test::to_host(p.x);
+  auto v = test::to_host(p.v);
+  auto w = test::to_host(p.omega);
+  auto m = test::to_host(p.mass);
+  auto I = test::to_host(p.inertia);
   Totals t{{0, 0, 0}, {0, 0, 0}, 0};
   for (int i = 0; i < p.n; ++i) {
     for (int d = 0; d < 3; ++d) {
@@ -39,14 +48,15 @@ double hertz_duration(double m_eff, double R_eff, double E_star, double v) {
 }
 }  // namespace
 
-TEMPLATE_LIST_TEST_CASE("oblique collision with friction and damping conserves momentum", "[conservation]", test::Backends) {
+TEMPLATE_LIST_TEST_CASE("oblique collision with friction and damping conserves momentum", "[conservation]",
+                        test::Backends) {
   using D = TestType;
   using Model = HertzMindlin<double, Effects<kFriction | kDamping>, D>;
   const double R = 1e-3, m = 2500 * 4.0 / 3.0 * M_PI * R * R * R, v0 = 0.5;
   // Centres offset by R across the line of approach; surfaces 1e-7 m apart along the line.
   const double gap = std::sqrt((2 * R + 1e-7) * (2 * R + 1e-7) - R * R) - 2 * R;
   test::VerletStepper<Model, double, D> s{Model::create({glass(0.6, 0.5)}),
-                                         test::two_spheres<double, D>(R, m, v0, gap, 1.0 * R)};
+                                          test::two_spheres<double, D>(R, m, v0, gap, 1.0 * R)};
   s.pairs = test::single_pair<D>();
   s.pair_hist = ContactHistory<double, D>(1, Model::history_size);
   const double E_star = 70e9 / (2 * (1 - 0.0625));
@@ -60,7 +70,7 @@ TEMPLATE_LIST_TEST_CASE("oblique collision with friction and damping conserves m
     max_ft = std::max(max_ft, std::abs(t(0, 2)));
   }
   const Totals after = totals(s.p);
-  REQUIRE(max_ft > 0);                 // friction acted
+  REQUIRE(max_ft > 0);                  // friction acted
   REQUIRE(after.ke < 0.9 * before.ke);  // damping and friction dissipated energy
   const double pscale = m * v0, Lscale = m * v0 * R;
   for (int d = 0; d < 3; ++d) {
@@ -69,12 +79,13 @@ TEMPLATE_LIST_TEST_CASE("oblique collision with friction and damping conserves m
   }
 }
 
-TEMPLATE_LIST_TEST_CASE("undamped frictionless Hertz collision conserves kinetic energy", "[conservation]", test::Backends) {
+TEMPLATE_LIST_TEST_CASE("undamped frictionless Hertz collision conserves kinetic energy", "[conservation]",
+                        test::Backends) {
   using D = TestType;
   using Model = HertzMindlin<double, Effects<0>, D>;
   const double R = 1e-3, m = 2500 * 4.0 / 3.0 * M_PI * R * R * R, v0 = 1.0;
   test::VerletStepper<Model, double, D> s{Model::create({glass(1.0, 0.0)}),
-                                         test::two_spheres<double, D>(R, m, v0, 1e-9)};
+                                          test::two_spheres<double, D>(R, m, v0, 1e-9)};
   s.pairs = test::single_pair<D>();
   const double E_star = 70e9 / (2 * (1 - 0.0625));
   const double tc = hertz_duration(m / 2, R / 2, E_star, v0);

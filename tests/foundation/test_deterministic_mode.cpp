@@ -28,31 +28,41 @@ struct HmLaw {
   template <class T, unsigned B, class D>
   using model = HertzMindlin<T, Effects<B>, D>;
   template <class M>
-  static M create(const std::vector<Material>& m) { return M::create(m); }
+  static M create(const std::vector<Material>& m) {
+    return M::create(m);
+  }
 };
 struct LsLaw {
   template <class T, unsigned B, class D>
   using model = LinearSpring<T, Effects<B>, D>;
   template <class M>
-  static M create(const std::vector<Material>& m) { return M::create(m, 3e4); }  // ~ Hertz stiffness here
+  static M create(const std::vector<Material>& m) {
+    return M::create(m, 3e4);
+  }  // ~ Hertz stiffness here
 };
 struct JkrLaw {
   template <class T, unsigned B, class D>
   using model = Jkr<T, Effects<B>, D>;
   template <class M>
-  static M create(const std::vector<Material>& m) { return M::create(m); }
+  static M create(const std::vector<Material>& m) {
+    return M::create(m);
+  }
 };
 struct NanLaw {
   template <class T, unsigned B, class D>
   using model = Nan2022<T, Effects<B>, D>;
   template <class M>
-  static M create(const std::vector<Material>& m) { return M::create(m); }
+  static M create(const std::vector<Material>& m) {
+    return M::create(m);
+  }
 };
 struct MdrLaw {
   template <class T, unsigned B, class D>
   using model = Mdr<T, Effects<B>, D>;
   template <class M>
-  static M create(const std::vector<Material>& m) { return M::create(m); }
+  static M create(const std::vector<Material>& m) {
+    return M::create(m);
+  }
 };
 
 template <class Law, unsigned Bits>
@@ -64,11 +74,30 @@ struct Case {
 // Two deformable materials (different moduli, radii, densities: asymmetric pair constants) and a
 // rigid wall. E/Y = 50 and 40: the lattice's overlaps of about 0.1 R yield.
 std::vector<Material> materials() {
-  Material a; a.name = "a"; a.youngs_modulus = 1e8; a.poisson_ratio = 0.3; a.density = 2500;
-  a.restitution = 0.6; a.friction = 0.4; a.surface_energy = 0.05; a.yield_stress = 2e6;
-  Material b; b.name = "b"; b.youngs_modulus = 2e8; b.poisson_ratio = 0.25; b.density = 2000;
-  b.restitution = 0.7; b.friction = 0.3; b.surface_energy = 0.08; b.yield_stress = 5e6;
-  Material w; w.name = "wall"; w.rigid = true; w.poisson_ratio = 0.25; w.restitution = 0.5; w.friction = 0.3;
+  Material a;
+  a.name = "a";
+  a.youngs_modulus = 1e8;
+  a.poisson_ratio = 0.3;
+  a.density = 2500;
+  a.restitution = 0.6;
+  a.friction = 0.4;
+  a.surface_energy = 0.05;
+  a.yield_stress = 2e6;
+  Material b;
+  b.name = "b";
+  b.youngs_modulus = 2e8;
+  b.poisson_ratio = 0.25;
+  b.density = 2000;
+  b.restitution = 0.7;
+  b.friction = 0.3;
+  b.surface_energy = 0.08;
+  b.yield_stress = 5e6;
+  Material w;
+  w.name = "wall";
+  w.rigid = true;
+  w.poisson_ratio = 0.25;
+  w.restitution = 0.5;
+  w.friction = 0.3;
   w.surface_energy = 0.05;
   return {a, b, w};
 }
@@ -93,8 +122,13 @@ Setup make_setup() {
   Setup st;
   st.n = nx * ny * nz;
   auto idx = [&](int a, int b, int c) { return (c * ny + b) * nx + a; };
-  st.x.resize(3 * st.n); st.v.resize(3 * st.n); st.w.resize(3 * st.n);
-  st.r.resize(st.n); st.m.resize(st.n); st.mat.resize(st.n); st.gid.resize(st.n);
+  st.x.resize(3 * st.n);
+  st.v.resize(3 * st.n);
+  st.w.resize(3 * st.n);
+  st.r.resize(st.n);
+  st.m.resize(st.n);
+  st.mat.resize(st.n);
+  st.gid.resize(st.n);
   for (int c = 0; c < nz; ++c)
     for (int b = 0; b < ny; ++b)
       for (int a = 0; a < nx; ++a) {
@@ -104,13 +138,31 @@ Setup make_setup() {
         st.x[3 * i + 0] = a * s + 0.02 * R * u(rng);
         st.x[3 * i + 1] = b * s + 0.02 * R * u(rng);
         st.x[3 * i + 2] = c * s + 0.02 * R * u(rng);
-        for (int d = 0; d < 3; ++d) { st.v[3 * i + d] = 0.05 * u(rng); st.w[3 * i + d] = 20.0 * u(rng); }
+        for (int d = 0; d < 3; ++d) {
+          st.v[3 * i + d] = 0.05 * u(rng);
+          st.w[3 * i + d] = 20.0 * u(rng);
+        }
         st.m[i] = (st.mat[i] == 0 ? 2500.0 : 2000.0) * 4.0 / 3.0 * M_PI * st.r[i] * st.r[i] * st.r[i];
-        if (a + 1 < nx) { st.pi.push_back(i); st.pj.push_back(idx(a + 1, b, c)); }
-        if (b + 1 < ny) { st.pi.push_back(i); st.pj.push_back(idx(a, b + 1, c)); }
-        if (c + 1 < nz) { st.pi.push_back(i); st.pj.push_back(idx(a, b, c + 1)); }
-        if (c == 0) { st.wi.push_back(i); st.ww.push_back(0); }  // floor z = -0.9 R
-        if (a == 0) { st.wi.push_back(i); st.ww.push_back(1); }  // side wall x = -0.9 R
+        if (a + 1 < nx) {
+          st.pi.push_back(i);
+          st.pj.push_back(idx(a + 1, b, c));
+        }
+        if (b + 1 < ny) {
+          st.pi.push_back(i);
+          st.pj.push_back(idx(a, b + 1, c));
+        }
+        if (c + 1 < nz) {
+          st.pi.push_back(i);
+          st.pj.push_back(idx(a, b, c + 1));
+        }
+        if (c == 0) {
+          st.wi.push_back(i);
+          st.ww.push_back(0);
+        }  // floor z = -0.9 R
+        if (a == 0) {
+          st.wi.push_back(i);
+          st.ww.push_back(1);
+        }  // side wall x = -0.9 R
       }
   std::iota(st.gid.begin(), st.gid.end(), std::int64_t(0));
   std::shuffle(st.gid.begin(), st.gid.end(), rng);
@@ -148,33 +200,51 @@ Result<T> run(const Setup& st, const std::vector<int>& pair_order, const std::ve
   const int n = st.n;
   Particles<T, D> p(n);
   {
-    auto x = Kokkos::create_mirror_view(p.x), v = Kokkos::create_mirror_view(p.v), w = Kokkos::create_mirror_view(p.omega);
+    auto x = Kokkos::create_mirror_view(p.x), v = Kokkos::create_mirror_view(p.v),
+         w = Kokkos::create_mirror_view(p.omega);
     auto m = Kokkos::create_mirror_view(p.mass), I = Kokkos::create_mirror_view(p.inertia);
     auto r0 = Kokkos::create_mirror_view(p.radius0);
     auto mat = Kokkos::create_mirror_view(p.material);  // int view: its own declaration
     auto gid = Kokkos::create_mirror_view(p.gid);
     for (int i = 0; i < n; ++i) {
-      for (int d = 0; d < 3; ++d) { x(i, d) = T(st.x[3 * i + d]); v(i, d) = T(st.v[3 * i + d]); w(i, d) = T(st.w[3 * i + d]); }
+      for (int d = 0; d < 3; ++d) {
+        x(i, d) = T(st.x[3 * i + d]);
+        v(i, d) = T(st.v[3 * i + d]);
+        w(i, d) = T(st.w[3 * i + d]);
+      }
       m(i) = T(st.m[i]);
       I(i) = T(0.4 * st.m[i] * st.r[i] * st.r[i]);
       r0(i) = T(st.r[i]);
       mat(i) = st.mat[i];
       gid(i) = st.gid[i];
     }
-    Kokkos::deep_copy(p.x, x); Kokkos::deep_copy(p.v, v); Kokkos::deep_copy(p.omega, w);
-    Kokkos::deep_copy(p.mass, m); Kokkos::deep_copy(p.inertia, I); Kokkos::deep_copy(p.radius0, r0);
-    Kokkos::deep_copy(p.radius, r0); Kokkos::deep_copy(p.material, mat); Kokkos::deep_copy(p.gid, gid);
+    Kokkos::deep_copy(p.x, x);
+    Kokkos::deep_copy(p.v, v);
+    Kokkos::deep_copy(p.omega, w);
+    Kokkos::deep_copy(p.mass, m);
+    Kokkos::deep_copy(p.inertia, I);
+    Kokkos::deep_copy(p.radius0, r0);
+    Kokkos::deep_copy(p.radius, r0);
+    Kokkos::deep_copy(p.material, mat);
+    Kokkos::deep_copy(p.gid, gid);
   }
   Walls<T, D> walls(2);
   {
     auto pt = Kokkos::create_mirror_view(walls.point), nr = Kokkos::create_mirror_view(walls.normal);
     auto wm = Kokkos::create_mirror_view(walls.material);
     for (int k = 0; k < 2; ++k)
-      for (int d = 0; d < 3; ++d) { pt(k, d) = T(0); nr(k, d) = T(0); }
-    pt(0, 2) = T(-0.9e-3); nr(0, 2) = T(1);  // floor
-    pt(1, 0) = T(-0.9e-3); nr(1, 0) = T(1);  // side wall
+      for (int d = 0; d < 3; ++d) {
+        pt(k, d) = T(0);
+        nr(k, d) = T(0);
+      }
+    pt(0, 2) = T(-0.9e-3);
+    nr(0, 2) = T(1);  // floor
+    pt(1, 0) = T(-0.9e-3);
+    nr(1, 0) = T(1);  // side wall
     wm(0) = wm(1) = 2;
-    Kokkos::deep_copy(walls.point, pt); Kokkos::deep_copy(walls.normal, nr); Kokkos::deep_copy(walls.material, wm);
+    Kokkos::deep_copy(walls.point, pt);
+    Kokkos::deep_copy(walls.normal, nr);
+    Kokkos::deep_copy(walls.material, wm);
   }
   const int np = static_cast<int>(pair_order.size()), nwc = static_cast<int>(wall_order.size());
   ContactList<D> pairs(np, "pairs"), wl(nwc, "walls");
@@ -185,10 +255,15 @@ Result<T> run(const Setup& st, const std::vector<int>& pair_order, const std::ve
       f(k) = swap ? b : a;
       s(k) = swap ? a : b;
     }
-    Kokkos::deep_copy(pairs.first, f); Kokkos::deep_copy(pairs.second, s);
+    Kokkos::deep_copy(pairs.first, f);
+    Kokkos::deep_copy(pairs.second, s);
     auto wf = Kokkos::create_mirror_view(wl.first), ws = Kokkos::create_mirror_view(wl.second);
-    for (int k = 0; k < nwc; ++k) { wf(k) = st.wi[wall_order[k]]; ws(k) = st.ww[wall_order[k]]; }
-    Kokkos::deep_copy(wl.first, wf); Kokkos::deep_copy(wl.second, ws);
+    for (int k = 0; k < nwc; ++k) {
+      wf(k) = st.wi[wall_order[k]];
+      ws(k) = st.ww[wall_order[k]];
+    }
+    Kokkos::deep_copy(wl.first, wf);
+    Kokkos::deep_copy(wl.second, ws);
   }
   Model model = Law::template create<Model>(materials());
   if constexpr (has_update_radii<Model>::value) model.bind(p);
@@ -205,16 +280,21 @@ Result<T> run(const Setup& st, const std::vector<int>& pair_order, const std::ve
     if constexpr (has_update_radii<Model>::value) model.update_radii();
     if (step + 1 == steps) break;  // keep the last pass's forces
     const auto pp = p;
-    Kokkos::parallel_for(Kokkos::RangePolicy<exec>(0, n), KOKKOS_LAMBDA(int i) {
-      for (int d = 0; d < 3; ++d) {
-        pp.v(i, d) += dt * pp.force(i, d) / pp.mass(i);
-        pp.omega(i, d) += dt * pp.torque(i, d) / pp.inertia(i);
-        pp.x(i, d) += dt * pp.v(i, d);
-      }
-    });
+    Kokkos::parallel_for(
+        Kokkos::RangePolicy<exec>(0, n), KOKKOS_LAMBDA(int i) {
+          for (int d = 0; d < 3; ++d) {
+            pp.v(i, d) += dt * pp.force(i, d) / pp.mass(i);
+            pp.omega(i, d) += dt * pp.torque(i, d) / pp.inertia(i);
+            pp.x(i, d) += dt * pp.v(i, d);
+          }
+        });
   }
   Result<T> r;
-  r.force = flat(p.force); r.torque = flat(p.torque); r.x = flat(p.x); r.v = flat(p.v); r.w = flat(p.omega);
+  r.force = flat(p.force);
+  r.torque = flat(p.torque);
+  r.x = flat(p.x);
+  r.v = flat(p.v);
+  r.w = flat(p.omega);
   r.radius = flat(p.radius);
   r.pair_fields = Model::history_size;
   r.wall_fields = Model::history_size;
@@ -255,11 +335,11 @@ void require_same_bits(const Result<T>& a, const Result<T>& b) {
 
 }  // namespace
 
-TEMPLATE_TEST_CASE("deterministic mode: same bits for a shuffled, swapped list and on one thread",
-                   "[deterministic]", (Case<HmLaw, kFriction | kDamping>), (Case<HmLaw, 0u>),
-                   (Case<LsLaw, kFriction | kDamping>), (Case<JkrLaw, kAdhesion | kFriction | kDamping>),
-                   (Case<JkrLaw, kAdhesion>), (Case<NanLaw, kAdhesion | kPlasticity | kFriction | kDamping>),
-                   (Case<NanLaw, kPlasticity>), (Case<MdrLaw, kAllEffects>), (Case<MdrLaw, kPlasticity | kRadiusGrowth>),
+TEMPLATE_TEST_CASE("deterministic mode: same bits for a shuffled, swapped list and on one thread", "[deterministic]",
+                   (Case<HmLaw, kFriction | kDamping>), (Case<HmLaw, 0u>), (Case<LsLaw, kFriction | kDamping>),
+                   (Case<JkrLaw, kAdhesion | kFriction | kDamping>), (Case<JkrLaw, kAdhesion>),
+                   (Case<NanLaw, kAdhesion | kPlasticity | kFriction | kDamping>), (Case<NanLaw, kPlasticity>),
+                   (Case<MdrLaw, kAllEffects>), (Case<MdrLaw, kPlasticity | kRadiusGrowth>),
                    (Case<MdrLaw, kPlasticity | kAdhesion | kRadiusGrowth>), (Case<MdrLaw, kPlasticity | kFriction>)) {
   using Law = typename TestType::law;
   constexpr unsigned Bits = TestType::bits;

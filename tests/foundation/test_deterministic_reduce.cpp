@@ -14,8 +14,13 @@ using namespace epac;
 
 namespace {
 Material glass() {
-  Material m; m.name = "glass"; m.youngs_modulus = 70e9; m.poisson_ratio = 0.25; m.density = 2500;
-  m.restitution = 0.5; m.friction = 0.5;
+  Material m;
+  m.name = "glass";
+  m.youngs_modulus = 70e9;
+  m.poisson_ratio = 0.25;
+  m.density = 2500;
+  m.restitution = 0.5;
+  m.friction = 0.5;
   return m;
 }
 template <class T, class D>
@@ -29,7 +34,10 @@ auto forces(bool deterministic, bool reverse_list) {
     Kokkos::deep_copy(s, pk.contacts.second);
     auto f2 = Kokkos::create_mirror_view(pk.contacts.first), s2 = Kokkos::create_mirror_view(pk.contacts.second);
     const int n = pk.contacts.count;
-    for (int k = 0; k < n; ++k) { f2(k) = f(n - 1 - k); s2(k) = s(n - 1 - k); }
+    for (int k = 0; k < n; ++k) {
+      f2(k) = f(n - 1 - k);
+      s2(k) = s(n - 1 - k);
+    }
     Kokkos::deep_copy(pk.contacts.first, f2);
     Kokkos::deep_copy(pk.contacts.second, s2);
   }
@@ -48,7 +56,8 @@ auto forces(bool deterministic, bool reverse_list) {
 }
 }  // namespace
 
-TEMPLATE_TEST_CASE("deterministic reduction: same bits for any list order and backend", "[deterministic]", double, float) {
+TEMPLATE_TEST_CASE("deterministic reduction: same bits for any list order and backend", "[deterministic]", double,
+                   float) {
   using T = TestType;
   using DH = test::DeviceOf<Kokkos::DefaultHostExecutionSpace>;
   auto a = forces<T, DH>(true, false);

@@ -14,12 +14,18 @@ using namespace epac;
 namespace {
 Material glass() {
   Material m;
-  m.name = "glass"; m.youngs_modulus = 70e9; m.poisson_ratio = 0.25; m.density = 2500;
-  m.restitution = 0.7; m.friction = 0.4;
+  m.name = "glass";
+  m.youngs_modulus = 70e9;
+  m.poisson_ratio = 0.25;
+  m.density = 2500;
+  m.restitution = 0.7;
+  m.friction = 0.4;
   return m;
 }
 template <class T>
-double tol() { return std::is_same<T, float>::value ? 2e-5 : 1e-12; }
+double tol() {
+  return std::is_same<T, float>::value ? 2e-5 : 1e-12;
+}
 }  // namespace
 
 TEMPLATE_LIST_TEST_CASE("Hertz pair force equals (4/3) E* sqrt(R*) delta^1.5", "[hertz]", test::BackendsAndScalars) {
@@ -45,24 +51,35 @@ TEMPLATE_LIST_TEST_CASE("Hertz pair force equals (4/3) E* sqrt(R*) delta^1.5", "
   }
 }
 
-TEMPLATE_LIST_TEST_CASE("Hertz stiffness is dF/d(delta) and the wall force uses R* = R", "[hertz]", test::BackendsAndScalars) {
+TEMPLATE_LIST_TEST_CASE("Hertz stiffness is dF/d(delta) and the wall force uses R* = R", "[hertz]",
+                        test::BackendsAndScalars) {
   using D = typename TestType::device;
   using T = typename TestType::scalar;
-  Material wall; wall.name = "steel"; wall.rigid = true;
+  Material wall;
+  wall.name = "steel";
+  wall.rigid = true;
   auto model = HertzMindlin<T, Effects<0>, D>::create({glass(), wall});
   Kokkos::View<double*, D> out("out", 4);
   const double R = 2e-3, d0 = 1e-5;
-  Kokkos::parallel_for(Kokkos::RangePolicy<typename D::execution_space>(0, 1), KOKKOS_LAMBDA(int) {
-    ContactGeometry<T> g;
-    g.R_eff = T(R); g.pair = 1;  // glass against rigid wall
-    HistoryRow<T, D> row{{}, 0, 0};
-    const T h = T(d0 * 1e-3);
-    g.delta = T(d0); const auto n0 = model.normal(g, row);
-    g.delta = T(d0) + h; const auto np = model.normal(g, row);
-    g.delta = T(d0) - h; const auto nm = model.normal(g, row);
-    out(0) = double(n0.f); out(1) = double(n0.k_n); out(2) = double((np.f - nm.f) / (T(2) * h));
-    g.delta = T(0); out(3) = double(model.normal(g, row).active ? 1 : 0);
-  });
+  Kokkos::parallel_for(
+      Kokkos::RangePolicy<typename D::execution_space>(0, 1), KOKKOS_LAMBDA(int) {
+        ContactGeometry<T> g;
+        g.R_eff = T(R);
+        g.pair = 1;  // glass against rigid wall
+        HistoryRow<T, D> row{{}, 0, 0};
+        const T h = T(d0 * 1e-3);
+        g.delta = T(d0);
+        const auto n0 = model.normal(g, row);
+        g.delta = T(d0) + h;
+        const auto np = model.normal(g, row);
+        g.delta = T(d0) - h;
+        const auto nm = model.normal(g, row);
+        out(0) = double(n0.f);
+        out(1) = double(n0.k_n);
+        out(2) = double((np.f - nm.f) / (T(2) * h));
+        g.delta = T(0);
+        out(3) = double(model.normal(g, row).active ? 1 : 0);
+      });
   auto o = test::to_host(out);
   const Material gl = glass();
   const double E_star = gl.youngs_modulus / (1 - gl.poisson_ratio * gl.poisson_ratio);  // rigid wall
@@ -82,7 +99,12 @@ TEMPLATE_LIST_TEST_CASE("Newton's third law per contact with friction and spin",
     auto w = Kokkos::create_mirror_view(p.omega);
     auto v = Kokkos::create_mirror_view(p.v);
     Kokkos::deep_copy(v, p.v);
-    w(0, 0) = 3; w(0, 1) = -2; w(0, 2) = 5; w(1, 0) = -1; w(1, 1) = 4; w(1, 2) = 0.5;
+    w(0, 0) = 3;
+    w(0, 1) = -2;
+    w(0, 2) = 5;
+    w(1, 0) = -1;
+    w(1, 1) = 4;
+    w(1, 2) = 0.5;
     v(0, 2) = 0.05;
     Kokkos::deep_copy(p.omega, w);
     Kokkos::deep_copy(p.v, v);

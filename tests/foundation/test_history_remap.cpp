@@ -12,7 +12,10 @@ ContactList<D> make_list(const std::vector<std::pair<int, int>>& pairs) {
   ContactList<D> c(static_cast<int>(pairs.size()));
   auto f = Kokkos::create_mirror_view(c.first);
   auto s = Kokkos::create_mirror_view(c.second);
-  for (std::size_t k = 0; k < pairs.size(); ++k) { f(k) = pairs[k].first; s(k) = pairs[k].second; }
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    f(k) = pairs[k].first;
+    s(k) = pairs[k].second;
+  }
   Kokkos::deep_copy(c.first, f);
   Kokkos::deep_copy(c.second, s);
   return c;
@@ -66,17 +69,16 @@ TEMPLATE_LIST_TEST_CASE("remap of a large shuffled list keeps every row", "[rema
   using T = float;
   const int n = 3000;
   Particles<T, D> p(n);
-  Kokkos::parallel_for(Kokkos::RangePolicy<typename D::execution_space>(0, n), KOKKOS_LAMBDA(int i) {
-    p.gid(i) = 3 * static_cast<std::int64_t>(i) + 1;
-  });
+  Kokkos::parallel_for(
+      Kokkos::RangePolicy<typename D::execution_space>(0, n),
+      KOKKOS_LAMBDA(int i) { p.gid(i) = 3 * static_cast<std::int64_t>(i) + 1; });
   std::vector<std::pair<int, int>> a, b;
   for (int i = 0; i + 1 < n; ++i) a.push_back({i, i + 1});
   for (int i = n - 2; i >= 0; i -= 2) b.push_back({i + 1, i});  // every other contact, reversed
   auto la = make_list<D>(a), lb = make_list<D>(b);
   ContactHistory<T, D> old(pair_contact_keys(p, la), 1);
-  Kokkos::parallel_for(Kokkos::RangePolicy<typename D::execution_space>(0, la.count), KOKKOS_LAMBDA(int k) {
-    old.data(k, 0) = T(k);
-  });
+  Kokkos::parallel_for(
+      Kokkos::RangePolicy<typename D::execution_space>(0, la.count), KOKKOS_LAMBDA(int k) { old.data(k, 0) = T(k); });
   auto fresh = remap_history(old, pair_contact_keys(p, lb), 1);
   auto d = test::to_host(fresh.data);
   int wrong = 0;
@@ -86,14 +88,13 @@ TEMPLATE_LIST_TEST_CASE("remap of a large shuffled list keeps every row", "[rema
 
 // docs/install.md's host program: a history built from the contact list's keys keeps its rows through a
 // remap with the identical list (the keyless form used to come back all zero, silently).
-TEMPLATE_LIST_TEST_CASE("a keyed history survives a remap with the same list, a keyless one is refused",
-                        "[remap]", test::Backends) {
+TEMPLATE_LIST_TEST_CASE("a keyed history survives a remap with the same list, a keyless one is refused", "[remap]",
+                        test::Backends) {
   using D = TestType;
   using T = double;
   Particles<T, D> p(3);
-  Kokkos::parallel_for(Kokkos::RangePolicy<typename D::execution_space>(0, 3), KOKKOS_LAMBDA(int i) {
-    p.gid(i) = 10 + i;
-  });
+  Kokkos::parallel_for(
+      Kokkos::RangePolicy<typename D::execution_space>(0, 3), KOKKOS_LAMBDA(int i) { p.gid(i) = 10 + i; });
   auto list = make_list<D>({{0, 1}, {1, 2}});
   ContactHistory<T, D> keyed(pair_contact_keys(p, list), 3);
   REQUIRE(keyed.has_keys());

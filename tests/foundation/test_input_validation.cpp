@@ -12,15 +12,16 @@ using namespace epac;
 namespace {
 Material good() {
   Material m;
-  m.name = "glass"; m.youngs_modulus = 70e9; m.poisson_ratio = 0.25; m.density = 2500;
+  m.name = "glass";
+  m.youngs_modulus = 70e9;
+  m.poisson_ratio = 0.25;
+  m.density = 2500;
   return m;
 }
 std::string message_of(const Material& m) {
   try {
     m.validate();
-  } catch (const ParameterError& e) {
-    return e.what();
-  }
+  } catch (const ParameterError& e) { return e.what(); }
   return "";
 }
 }  // namespace
@@ -31,19 +32,26 @@ TEST_CASE("material validation names key, value and range", "[validation]") {
   auto msg = message_of(m);
   CHECK_THAT(msg, Catch::Contains("youngs_modulus") && Catch::Contains("-1") && Catch::Contains("(0, inf)") &&
                       Catch::Contains("glass"));
-  m = good(); m.poisson_ratio = 0.5;
+  m = good();
+  m.poisson_ratio = 0.5;
   CHECK_THAT(message_of(m), Catch::Contains("poisson_ratio = 0.5") && Catch::Contains("(-1, 0.5)"));
-  m = good(); m.poisson_ratio = 0.7;
+  m = good();
+  m.poisson_ratio = 0.7;
   CHECK_THAT(message_of(m), Catch::Contains("poisson_ratio = 0.7"));
-  m = good(); m.density = std::numeric_limits<double>::quiet_NaN();
+  m = good();
+  m.density = std::numeric_limits<double>::quiet_NaN();
   CHECK_THAT(message_of(m), Catch::Contains("density = nan"));
-  m = good(); m.restitution = 1.2;
+  m = good();
+  m.restitution = 1.2;
   CHECK_THAT(message_of(m), Catch::Contains("restitution = 1.2") && Catch::Contains("[0, 1]"));
-  m = good(); m.youngs_modulus = std::numeric_limits<double>::infinity();
+  m = good();
+  m.youngs_modulus = std::numeric_limits<double>::infinity();
   CHECK_THAT(message_of(m), Catch::Contains("youngs_modulus = inf"));
-  m = good(); m.yield_stress = std::numeric_limits<double>::infinity();  // "no yield" is valid
+  m = good();
+  m.yield_stress = std::numeric_limits<double>::infinity();  // "no yield" is valid
   CHECK(message_of(m).empty());
-  m = good(); m.yield_stress = 0;
+  m = good();
+  m.yield_stress = 0;
   CHECK_THAT(message_of(m), Catch::Contains("yield_stress = 0"));
   CHECK(message_of(good()).empty());
 }

@@ -15,7 +15,11 @@ using namespace epac;
 namespace {
 Material mat(double e0) {
   Material m;
-  m.name = "m"; m.youngs_modulus = 1e8; m.poisson_ratio = 0.3; m.density = 2000; m.restitution = e0;
+  m.name = "m";
+  m.youngs_modulus = 1e8;
+  m.poisson_ratio = 0.3;
+  m.density = 2000;
+  m.restitution = e0;
   return m;
 }
 template <class Model, class D>
@@ -55,7 +59,8 @@ TEST_CASE("Hertz damping coefficient: e(c) monotone, inverse exact, ends handled
     CHECK(e < prev);
     prev = e;
   }
-  for (double e0 : {0.2, 0.5, 0.9}) CHECK(hertz_restitution_for(hertz_damping_coefficient(e0)) == Approx(e0).epsilon(1e-6));
+  for (double e0 : {0.2, 0.5, 0.9})
+    CHECK(hertz_restitution_for(hertz_damping_coefficient(e0)) == Approx(e0).epsilon(1e-6));
   CHECK(std::isfinite(hertz_damping_coefficient(0.0)));
   CHECK(linear_damping_ratio(0.0) == 1.0);  // ln(0) guarded: the critical-damping limit
   CHECK_THROWS_AS(hertz_damping_coefficient(1.5), ParameterError);

@@ -29,10 +29,11 @@ State<D> valid_state() {
   Kokkos::deep_copy(s.p.inertia, 4e-12);
   Kokkos::deep_copy(s.p.material, 0);
   auto p = s.p;
-  Kokkos::parallel_for(Kokkos::RangePolicy<typename D::execution_space>(0, 3), KOKKOS_LAMBDA(int i) {
-    p.gid(i) = 7 * i;
-    p.x(i, 0) = 3e-3 * i;
-  });
+  Kokkos::parallel_for(
+      Kokkos::RangePolicy<typename D::execution_space>(0, 3), KOKKOS_LAMBDA(int i) {
+        p.gid(i) = 7 * i;
+        p.x(i, 0) = 3e-3 * i;
+      });
   auto n = Kokkos::create_mirror_view(s.w.normal);
   auto m = Kokkos::create_mirror_view(s.w.material);
   n(0, 2) = 1.0;
@@ -90,8 +91,8 @@ TEMPLATE_LIST_TEST_CASE("validate(particles, walls, model) names the field, inde
   SECTION("a wall normal that is not a unit vector") {
     auto s = valid_state<D>();
     set(s.w.normal, 0, 2, 2.0);
-    CHECK_THROWS_WITH(validate(s.p, s.w, model), Catch::Contains("|walls.normal[0]| = 2") &&
-                                                     Catch::Contains("unit normal"));
+    CHECK_THROWS_WITH(validate(s.p, s.w, model),
+                      Catch::Contains("|walls.normal[0]| = 2") && Catch::Contains("unit normal"));
     set(s.w.normal, 0, 2, 0.0);  // the zero vector: never filled
     CHECK_THROWS_WITH(validate(s.p, s.w, model), Catch::Contains("|walls.normal[0]| = 0"));
     set(s.w.normal, 0, 2, 1.0 + 5e-7);  // within 1e-6: accepted
@@ -123,8 +124,8 @@ TEMPLATE_LIST_TEST_CASE("validate(particles, walls, model) names the field, inde
   SECTION("global ids: non-negative, below 2^32 (history keys), unique") {
     auto s = valid_state<D>();
     set(s.p.gid, 1, std::int64_t(-3));
-    CHECK_THROWS_WITH(validate(s.p, model), Catch::Contains("particles.gid[1] = -3") &&
-                                                Catch::Contains("[0, 4294967295]"));
+    CHECK_THROWS_WITH(validate(s.p, model),
+                      Catch::Contains("particles.gid[1] = -3") && Catch::Contains("[0, 4294967295]"));
     s = valid_state<D>();
     set(s.p.gid, 1, std::int64_t(1) << 32);
     CHECK_THROWS_WITH(validate(s.p, model), Catch::Contains("particles.gid[1] = 4294967296"));

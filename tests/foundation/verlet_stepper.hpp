@@ -26,19 +26,21 @@ struct VerletStepper {
   void half_kick() {
     auto pp = p;
     const T h = T(0.5) * dt;
-    Kokkos::parallel_for(Kokkos::RangePolicy<typename D::execution_space>(0, p.n), KOKKOS_LAMBDA(int i) {
-      for (int d = 0; d < 3; ++d) {
-        pp.v(i, d) += h * pp.force(i, d) / pp.mass(i);
-        pp.omega(i, d) += h * pp.torque(i, d) / pp.inertia(i);
-      }
-    });
+    Kokkos::parallel_for(
+        Kokkos::RangePolicy<typename D::execution_space>(0, p.n), KOKKOS_LAMBDA(int i) {
+          for (int d = 0; d < 3; ++d) {
+            pp.v(i, d) += h * pp.force(i, d) / pp.mass(i);
+            pp.omega(i, d) += h * pp.torque(i, d) / pp.inertia(i);
+          }
+        });
   }
   void drift() {
     auto pp = p;
     const T h = dt;
-    Kokkos::parallel_for(Kokkos::RangePolicy<typename D::execution_space>(0, p.n), KOKKOS_LAMBDA(int i) {
-      for (int d = 0; d < 3; ++d) pp.x(i, d) += h * pp.v(i, d);
-    });
+    Kokkos::parallel_for(
+        Kokkos::RangePolicy<typename D::execution_space>(0, p.n), KOKKOS_LAMBDA(int i) {
+          for (int d = 0; d < 3; ++d) pp.x(i, d) += h * pp.v(i, d);
+        });
     if (walls.n > 0) advance_walls(walls, dt);
   }
   void start() { forces(); }
@@ -63,12 +65,24 @@ Particles<T, D> two_spheres(double R, double m, double v0, double gap, double of
   auto gid = Kokkos::create_mirror_view(p.gid);
   Kokkos::deep_copy(x, T(0));
   Kokkos::deep_copy(v, T(0));
-  x(0, 0) = T(-(R + 0.5 * gap)); x(1, 0) = T(R + 0.5 * gap);
-  x(0, 1) = T(-0.5 * offset_y); x(1, 1) = T(0.5 * offset_y);
-  v(0, 0) = T(0.5 * v0); v(1, 0) = T(-0.5 * v0);
-  for (int i = 0; i < 2; ++i) { ms(i) = T(m); I(i) = T(0.4 * m * R * R); r(i) = T(R); gid(i) = i; }
-  Kokkos::deep_copy(p.x, x); Kokkos::deep_copy(p.v, v); Kokkos::deep_copy(p.mass, ms);
-  Kokkos::deep_copy(p.inertia, I); Kokkos::deep_copy(p.radius, r); Kokkos::deep_copy(p.radius0, r);
+  x(0, 0) = T(-(R + 0.5 * gap));
+  x(1, 0) = T(R + 0.5 * gap);
+  x(0, 1) = T(-0.5 * offset_y);
+  x(1, 1) = T(0.5 * offset_y);
+  v(0, 0) = T(0.5 * v0);
+  v(1, 0) = T(-0.5 * v0);
+  for (int i = 0; i < 2; ++i) {
+    ms(i) = T(m);
+    I(i) = T(0.4 * m * R * R);
+    r(i) = T(R);
+    gid(i) = i;
+  }
+  Kokkos::deep_copy(p.x, x);
+  Kokkos::deep_copy(p.v, v);
+  Kokkos::deep_copy(p.mass, ms);
+  Kokkos::deep_copy(p.inertia, I);
+  Kokkos::deep_copy(p.radius, r);
+  Kokkos::deep_copy(p.radius0, r);
   Kokkos::deep_copy(p.gid, gid);
   Kokkos::deep_copy(p.material, 0);
   return p;

@@ -14,12 +14,17 @@ using namespace epac;
 namespace {
 Material jkr_particle(double gamma) {
   Material m;
-  m.name = "p"; m.youngs_modulus = 1.2e9; m.poisson_ratio = 0.3; m.density = 1350; m.surface_energy = gamma;
+  m.name = "p";
+  m.youngs_modulus = 1.2e9;
+  m.poisson_ratio = 0.3;
+  m.density = 1350;
+  m.surface_energy = gamma;
   return m;
 }
 Material wall() {
   Material m;
-  m.name = "wall"; m.rigid = true;
+  m.name = "wall";
+  m.rigid = true;
   return m;
 }
 constexpr double kR = 2.45e-6;
@@ -35,9 +40,9 @@ TEMPLATE_LIST_TEST_CASE("jkr contact radius: edges of the solve", "[jkr][edge]",
   auto ih = Kokkos::create_mirror_view(in);
   for (int k = 0; k < n; ++k) ih(k) = T(ds[k]);
   Kokkos::deep_copy(in, ih);
-  Kokkos::parallel_for(Kokkos::RangePolicy<typename D::execution_space>(0, n), KOKKOS_LAMBDA(int k) {
-    out(k) = jkr_contact_radius_ratio(in(k));
-  });
+  Kokkos::parallel_for(
+      Kokkos::RangePolicy<typename D::execution_space>(0, n),
+      KOKKOS_LAMBDA(int k) { out(k) = jkr_contact_radius_ratio(in(k)); });
   auto x = test::to_host(out);
   const double tol = sizeof(T) == 4 ? 1e-5 : 1e-11;
   CHECK(jkr_critical_overlap_ratio<double>() == Approx(dc).epsilon(1e-15));
@@ -46,7 +51,7 @@ TEMPLATE_LIST_TEST_CASE("jkr contact radius: edges of the solve", "[jkr][edge]",
   // sqrt(2 eps |d_c| / 3), so that is the attainable accuracy there.
   const double eps = sizeof(T) == 4 ? 1.2e-7 : 2.2e-16;
   const double tol_c = 4 * std::sqrt(2 * eps / 3);
-  CHECK(x(0) == Approx(xc).epsilon(tol));  // below the critical overlap: clamped to the end point
+  CHECK(x(0) == Approx(xc).epsilon(tol));    // below the critical overlap: clamped to the end point
   CHECK(x(1) == Approx(xc).epsilon(tol_c));  // at it
   // just above it the root leaves x_c like sqrt(d - d_c) (double root of g): loose but bounded
   CHECK(x(2) > T(xc) * T(1 - tol));

@@ -17,19 +17,24 @@ using namespace epac;
 namespace {
 Material jkr_material(double E, double nu, double gamma) {
   Material m;
-  m.name = "p"; m.youngs_modulus = E; m.poisson_ratio = nu; m.density = 1350; m.surface_energy = gamma;
+  m.name = "p";
+  m.youngs_modulus = E;
+  m.poisson_ratio = nu;
+  m.density = 1350;
+  m.surface_energy = gamma;
   m.friction = 0.3;
   return m;
 }
 }  // namespace
 
-TEMPLATE_LIST_TEST_CASE("jkr detachment: one step past delta_c releases and resets, pair and wall",
-                        "[jkr][detach]", test::BackendsAndScalars) {
+TEMPLATE_LIST_TEST_CASE("jkr detachment: one step past delta_c releases and resets, pair and wall", "[jkr][detach]",
+                        test::BackendsAndScalars) {
   using D = typename TestType::device;
   using T = typename TestType::scalar;
   using M = Jkr<T, Effects<kAdhesion | kFriction | kDamping>, D>;
   Material wall;
-  wall.name = "wall"; wall.rigid = true;
+  wall.name = "wall";
+  wall.rigid = true;
   const Material a = jkr_material(1.2e9, 0.3, 0.2), b = jkr_material(5e9, 0.25, 0.5);
   const M model = M::create({a, b, wall});
   const double R0 = 2.45e-6, R1 = 7e-6;
@@ -41,7 +46,8 @@ TEMPLATE_LIST_TEST_CASE("jkr detachment: one step past delta_c releases and rese
     const JkrScales<double> sc = jkr_scales(pp.surface_energy, R_star, pp.E_star);
     const double dc = jkr_critical_overlap_ratio<double>() * sc.delta_s;
     CHECK(dc == Approx(-0.75 * std::cbrt(M_PI * M_PI * pp.surface_energy * pp.surface_energy * R_star /
-                                         (pp.E_star * pp.E_star))).epsilon(1e-12));
+                                         (pp.E_star * pp.E_star)))
+                    .epsilon(1e-12));
     CAPTURE(dc);
     auto fresh = [&] { return test::ContactStepper<M>(model, R0, pair ? R1 : -1.0, 0, pair ? 1 : 2); };
     std::vector<double> load;
@@ -60,7 +66,7 @@ TEMPLATE_LIST_TEST_CASE("jkr detachment: one step past delta_c releases and rese
       if (seen < dc) {
         CHECK(F == 0.0);
         for (double x : s.history()) CHECK(x == 0.0);  // contact state and tangential history
-        CHECK(s.step(-0.5 * std::fabs(dc)) == 0.0);     // a new contact: not formed at a gap
+        CHECK(s.step(-0.5 * std::fabs(dc)) == 0.0);    // a new contact: not formed at a gap
         CHECK(s.step(back) == F_fresh_back);
       } else {
         CHECK(F == Approx(-5.0 / 9.0 * sc.f_ce).epsilon(sizeof(T) >= 8 ? 5e-3 : 0.1));

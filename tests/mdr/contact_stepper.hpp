@@ -30,25 +30,41 @@ class ContactStepper {
   // Pair: particles of radii R0, R1 and materials m0, m1. Wall (R1 <= 0): particle of radius R0
   // and material m0 against a wall of material m1 (normal -x, at x = R0 - delta).
   ContactStepper(const Model& model, double R0, double R1, int m0, int m1)
-      : model_(model), pair_(R1 > 0), p_(pair_ ? 2 : 1), w_(pair_ ? 0 : 1), c_(1),
-        h_(1, Model::history_size) {
+      : model_(model), pair_(R1 > 0), p_(pair_ ? 2 : 1), w_(pair_ ? 0 : 1), c_(1), h_(1, Model::history_size) {
     auto r = Kokkos::create_mirror_view(p_.radius);
     auto m = Kokkos::create_mirror_view(p_.mass);
     auto g = Kokkos::create_mirror_view(p_.gid);
     auto mat = Kokkos::create_mirror_view(p_.material);
-    r(0) = T(R0); m(0) = T(1); g(0) = 0; mat(0) = m0;
-    if (pair_) { r(1) = T(R1); m(1) = T(1); g(1) = 1; mat(1) = m1; }
-    Kokkos::deep_copy(p_.radius, r); Kokkos::deep_copy(p_.radius0, r); Kokkos::deep_copy(p_.mass, m);
-    Kokkos::deep_copy(p_.gid, g); Kokkos::deep_copy(p_.material, mat);
+    r(0) = T(R0);
+    m(0) = T(1);
+    g(0) = 0;
+    mat(0) = m0;
+    if (pair_) {
+      r(1) = T(R1);
+      m(1) = T(1);
+      g(1) = 1;
+      mat(1) = m1;
+    }
+    Kokkos::deep_copy(p_.radius, r);
+    Kokkos::deep_copy(p_.radius0, r);
+    Kokkos::deep_copy(p_.mass, m);
+    Kokkos::deep_copy(p_.gid, g);
+    Kokkos::deep_copy(p_.material, mat);
     auto f = Kokkos::create_mirror_view(c_.first);
     auto s = Kokkos::create_mirror_view(c_.second);
-    f(0) = 0; s(0) = pair_ ? 1 : 0;
-    Kokkos::deep_copy(c_.first, f); Kokkos::deep_copy(c_.second, s);
+    f(0) = 0;
+    s(0) = pair_ ? 1 : 0;
+    Kokkos::deep_copy(c_.first, f);
+    Kokkos::deep_copy(c_.second, s);
     if (!pair_) {
       auto wn = Kokkos::create_mirror_view(w_.normal);
       auto wm = Kokkos::create_mirror_view(w_.material);
-      wn(0, 0) = T(-1); wn(0, 1) = T(0); wn(0, 2) = T(0); wm(0) = m1;
-      Kokkos::deep_copy(w_.normal, wn); Kokkos::deep_copy(w_.material, wm);
+      wn(0, 0) = T(-1);
+      wn(0, 1) = T(0);
+      wn(0, 2) = T(0);
+      wm(0) = m1;
+      Kokkos::deep_copy(w_.normal, wn);
+      Kokkos::deep_copy(w_.material, wm);
     }
     out_.normal_force = Kokkos::View<T*, D>("fn", 1);
     out_.overlap = Kokkos::View<T*, D>("delta", 1);
@@ -69,8 +85,10 @@ class ContactStepper {
       Kokkos::deep_copy(w_.point, wp);
     }
     zero_forces(p_);
-    if (pair_) compute_pair_forces(model_, p_, c_, h_, T(0), out_);
-    else compute_wall_forces(model_, p_, w_, c_, h_, T(0), out_);
+    if (pair_)
+      compute_pair_forces(model_, p_, c_, h_, T(0), out_);
+    else
+      compute_wall_forces(model_, p_, w_, c_, h_, T(0), out_);
     const double f = to_host(out_.normal_force)(0);
     if constexpr (Growth) model_.update_radii();
     return f;
@@ -101,10 +119,12 @@ class ContactStepper {
     const auto w = w_;
     const auto h = h_;
     const bool pair = pair_;
-    Kokkos::parallel_for(Kokkos::RangePolicy<typename D::execution_space>(0, 1), KOKKOS_LAMBDA(int) {
-      const ContactGeometry<T> g = pair ? pair_geometry<T, D>(p, 0, 1, m.nmat) : wall_geometry<T, D>(p, w, 0, 0, m.nmat);
-      r(0) = double(f(m, g, HistoryRow<T, D>{h.data, 0, 0}));
-    });
+    Kokkos::parallel_for(
+        Kokkos::RangePolicy<typename D::execution_space>(0, 1), KOKKOS_LAMBDA(int) {
+          const ContactGeometry<T> g =
+              pair ? pair_geometry<T, D>(p, 0, 1, m.nmat) : wall_geometry<T, D>(p, w, 0, 0, m.nmat);
+          r(0) = double(f(m, g, HistoryRow<T, D>{h.data, 0, 0}));
+        });
     return to_host(r)(0);
   }
 

@@ -48,8 +48,7 @@ inline Material rigid_wall_material() {
 }
 
 template <class T>
-MdrSideConstants<T> side_constants(double E, double nu, double Y,
-                                   MdrYieldOnset onset = MdrYieldOnset::elastic_law) {
+MdrSideConstants<T> side_constants(double E, double nu, double Y, MdrYieldOnset onset = MdrYieldOnset::elastic_law) {
   return mdr_side_constants<T>(mdr_material(E, nu, Y), onset);
 }
 
@@ -92,11 +91,18 @@ SideTrace run_side_path(const MdrSideConstants<T>& c, double gamma, double xi, d
   auto h = to_host(out);
   SideTrace t;
   for (int k = 0; k < n; ++k) {
-    t.F.push_back(h(k, 0)); t.area.push_back(h(k, 1)); t.a.push_back(h(k, 2));
-    t.d1De.push_back(h(k, 3)); t.delta_p.push_back(h(k, 4)); t.delta_max.push_back(h(k, 5));
-    t.A.push_back(h(k, 6)); t.B.push_back(h(k, 7));
-    t.yielded.push_back(static_cast<int>(h(k, 8))); t.state.push_back(static_cast<int>(h(k, 9)));
-    t.floored.push_back(static_cast<int>(h(k, 10))); t.delta.push_back(h(k, 11));
+    t.F.push_back(h(k, 0));
+    t.area.push_back(h(k, 1));
+    t.a.push_back(h(k, 2));
+    t.d1De.push_back(h(k, 3));
+    t.delta_p.push_back(h(k, 4));
+    t.delta_max.push_back(h(k, 5));
+    t.A.push_back(h(k, 6));
+    t.B.push_back(h(k, 7));
+    t.yielded.push_back(static_cast<int>(h(k, 8)));
+    t.state.push_back(static_cast<int>(h(k, 9)));
+    t.floored.push_back(static_cast<int>(h(k, 10)));
+    t.delta.push_back(h(k, 11));
   }
   return t;
 }
@@ -161,7 +167,10 @@ FlatTrace run_flats(Model model, double R0, const std::vector<double>& delta_o_p
     wm(k) = 1;
     const int axis = k / 2;
     const double sgn = (k % 2 == 0) ? 1.0 : -1.0;
-    for (int d = 0; d < 3; ++d) { wp(k, d) = T(0); wn(k, d) = T(0); }
+    for (int d = 0; d < 3; ++d) {
+      wp(k, d) = T(0);
+      wn(k, d) = T(0);
+    }
     wp(k, axis) = T(sgn * R0);
     wn(k, axis) = T(-sgn);
   }
@@ -171,7 +180,10 @@ FlatTrace run_flats(Model model, double R0, const std::vector<double>& delta_o_p
   {
     auto f = Kokkos::create_mirror_view(c.first);
     auto s = Kokkos::create_mirror_view(c.second);
-    for (int k = 0; k < nw; ++k) { f(k) = 0; s(k) = k; }
+    for (int k = 0; k < nw; ++k) {
+      f(k) = 0;
+      s(k) = k;
+    }
     Kokkos::deep_copy(c.first, f);
     Kokkos::deep_copy(c.second, s);
   }
@@ -195,7 +207,9 @@ FlatTrace run_flats(Model model, double R0, const std::vector<double>& delta_o_p
       Kokkos::parallel_for(
           "mdr_test::flat_outputs", Kokkos::RangePolicy<typename D::execution_space>(0, 1), KOKKOS_LAMBDA(int) {
             ContactGeometry<T> g;
-            g.i = 0; g.j = -1; g.wall = 0;
+            g.i = 0;
+            g.j = -1;
+            g.wall = 0;
             g.pair = pp.material(0) * nmat + ww.material(0);
             g.n = load3(ww.normal, 0);
             const T dist = dot(load3(pp.x, 0) - load3(ww.point, 0), g.n);
@@ -233,7 +247,6 @@ FlatTrace run_flats(Model model, double R0, const std::vector<double>& delta_o_p
   return tr;
 }
 
-
 // --- two particles on the x axis pressed through a sequence of total overlaps ---
 // Particle 0 (radius R0, material 0, gid 0) at the origin, particle 1 (radius R1, material m1,
 // gid 1) on +x at centre distance R0_o + R1_o - delta (measured with the initial radii, so a
@@ -254,7 +267,14 @@ PairTrace run_pair_path(Model model, double R0, double R1, int m1, const std::ve
     auto m = Kokkos::create_mirror_view(p.mass);
     auto g = Kokkos::create_mirror_view(p.gid);
     auto mat = Kokkos::create_mirror_view(p.material);
-    r(0) = T(R0); r(1) = T(R1); m(0) = T(1); m(1) = T(1); g(0) = 0; g(1) = 1; mat(0) = 0; mat(1) = m1;
+    r(0) = T(R0);
+    r(1) = T(R1);
+    m(0) = T(1);
+    m(1) = T(1);
+    g(0) = 0;
+    g(1) = 1;
+    mat(0) = 0;
+    mat(1) = m1;
     Kokkos::deep_copy(p.radius, r);
     Kokkos::deep_copy(p.radius0, r);
     Kokkos::deep_copy(p.mass, m);
@@ -266,7 +286,8 @@ PairTrace run_pair_path(Model model, double R0, double R1, int m1, const std::ve
   {
     auto f = Kokkos::create_mirror_view(c.first);
     auto s = Kokkos::create_mirror_view(c.second);
-    f(0) = 0; s(0) = 1;
+    f(0) = 0;
+    s(0) = 1;
     Kokkos::deep_copy(c.first, f);
     Kokkos::deep_copy(c.second, s);
   }

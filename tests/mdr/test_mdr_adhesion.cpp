@@ -82,7 +82,10 @@ TEMPLATE_LIST_TEST_CASE("MDR adhesion, elastic: JKR once the edge springs reach 
       CHECK(last4 == Approx(target).epsilon(0.03));
     }
     // after separation: no force, no adhesive radius, until pressed again
-    for (int k = sep; k < t.size(); ++k) { CHECK(t.F[k] == 0.0); CHECK(t.a[k] == 0.0); }
+    for (int k = sep; k < t.size(); ++k) {
+      CHECK(t.F[k] == 0.0);
+      CHECK(t.a[k] == 0.0);
+    }
   }
 }
 
@@ -94,7 +97,7 @@ TEMPLATE_LIST_TEST_CASE("MDR adhesion: re-forms only after compression; states f
   const double gamma = Eeff * R / 2.2e4;
   const auto c = side_constants<T>(E, kNu, E / 12.5);
   std::vector<double> path;
-  append_ramp(path, 0.0, 0.2 * R, 400);     // plastic loading (delta_Y = 0.12 R)
+  append_ramp(path, 0.0, 0.2 * R, 400);  // plastic loading (delta_Y = 0.12 R)
   const int n1 = static_cast<int>(path.size());
   append_ramp(path, 0.2 * R, -0.02 * R, 4000);  // unload through separation
   const int n2 = static_cast<int>(path.size());
@@ -182,31 +185,32 @@ TEMPLATE_LIST_TEST_CASE("MDR adhesion: halving the increment changes forces and 
   }
 }
 
-TEMPLATE_LIST_TEST_CASE("MDR adhesion guards: critical radius and peeling root at their edges", "[mdr][adhesion][guard]",
-                        BackendsAndScalars) {
+TEMPLATE_LIST_TEST_CASE("MDR adhesion guards: critical radius and peeling root at their edges",
+                        "[mdr][adhesion][guard]", BackendsAndScalars) {
   using D = typename TestType::device;
   using T = typename TestType::scalar;
   Kokkos::View<double**, Kokkos::LayoutRight, D> o("o", 8, 4);
-  Kokkos::parallel_for(Kokkos::RangePolicy<typename D::execution_space>(0, 1), KOKKOS_LAMBDA(int) {
-    const T E = 1, B = 2;
-    // lambda = E A^2 / (xi^2 pi gamma B) from 1e-6 to 1e12 (tiny to huge adhesion)
-    const T gammas[4] = {T(1e3), T(1), T(1e-4), T(1e-10)};
-    for (int k = 0; k < 4; ++k) {
-      for (int xi = 1; xi <= 3; xi += 2) {
-        const T A = T(0.1);
-        const T ac = mdr_critical_radius(E, gammas[k], T(xi), A, B);
-        const int row = 2 * k + (xi == 3);
-        o(row, 0) = ac;
-        // (15): d g_1D/da = xi sqrt(pi gamma / (2 E a)) at a_c
-        o(row, 1) = mdr_ellipse_gap_slope(A, B, ac);
-        o(row, 2) = T(xi) * math::sqrt(constants<T>::pi * gammas[k] / (T(2) * E * ac));
-        // peeling root at the edge: d = g(a_c) - Delta l(a_c) (the minimum for xi = 1) gives a_c
-        const T d = mdr_ellipse_gap(A, B, ac) - mdr_critical_extension(E, gammas[k], ac);
-        const T a_hi = T(0.5) * B;
-        o(row, 3) = (ac < a_hi) ? mdr_peeling_radius(E, gammas[k], A, B, d, ac, a_hi) : ac;
-      }
-    }
-  });
+  Kokkos::parallel_for(
+      Kokkos::RangePolicy<typename D::execution_space>(0, 1), KOKKOS_LAMBDA(int) {
+        const T E = 1, B = 2;
+        // lambda = E A^2 / (xi^2 pi gamma B) from 1e-6 to 1e12 (tiny to huge adhesion)
+        const T gammas[4] = {T(1e3), T(1), T(1e-4), T(1e-10)};
+        for (int k = 0; k < 4; ++k) {
+          for (int xi = 1; xi <= 3; xi += 2) {
+            const T A = T(0.1);
+            const T ac = mdr_critical_radius(E, gammas[k], T(xi), A, B);
+            const int row = 2 * k + (xi == 3);
+            o(row, 0) = ac;
+            // (15): d g_1D/da = xi sqrt(pi gamma / (2 E a)) at a_c
+            o(row, 1) = mdr_ellipse_gap_slope(A, B, ac);
+            o(row, 2) = T(xi) * math::sqrt(constants<T>::pi * gammas[k] / (T(2) * E * ac));
+            // peeling root at the edge: d = g(a_c) - Delta l(a_c) (the minimum for xi = 1) gives a_c
+            const T d = mdr_ellipse_gap(A, B, ac) - mdr_critical_extension(E, gammas[k], ac);
+            const T a_hi = T(0.5) * B;
+            o(row, 3) = (ac < a_hi) ? mdr_peeling_radius(E, gammas[k], A, B, d, ac, a_hi) : ac;
+          }
+        }
+      });
   auto h = to_host(o);
   const double tol = sizeof(T) >= 8 ? 1e-8 : 2e-3;
   for (int r = 0; r < 8; ++r) {

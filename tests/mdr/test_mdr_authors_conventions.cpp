@@ -28,8 +28,8 @@ struct OnePass {
 };
 
 template <class Model>
-OnePass<Model> one_pass(const Model& model, double R0, double R1, double delta, double v0x, double v0y,
-                        double w0z, double dt, std::vector<double>* history = nullptr) {
+OnePass<Model> one_pass(const Model& model, double R0, double R1, double delta, double v0x, double v0y, double w0z,
+                        double dt, std::vector<double>* history = nullptr) {
   using T = typename Model::scalar_type;
   using D = typename Model::device_type;
   const bool pair = R1 > 0;
@@ -42,18 +42,40 @@ OnePass<Model> one_pass(const Model& model, double R0, double R1, double delta, 
   auto g = Kokkos::create_mirror_view(p.gid);
   auto mat = Kokkos::create_mirror_view(p.material);
   for (int k = 0; k < p.n; ++k)
-    for (int d = 0; d < 3; ++d) { x(k, d) = T(0); v(k, d) = T(0); w(k, d) = T(0); }
-  v(0, 0) = T(v0x); v(0, 1) = T(v0y); w(0, 2) = T(w0z);
-  r(0) = T(R0); m(0) = T(2); g(0) = 0; mat(0) = 0;
-  if (pair) { x(1, 0) = T(R0 + R1 - delta); r(1) = T(R1); m(1) = T(3); g(1) = 1; mat(1) = 0; }
-  Kokkos::deep_copy(p.x, x); Kokkos::deep_copy(p.v, v); Kokkos::deep_copy(p.omega, w);
-  Kokkos::deep_copy(p.radius, r); Kokkos::deep_copy(p.radius0, r); Kokkos::deep_copy(p.mass, m);
-  Kokkos::deep_copy(p.gid, g); Kokkos::deep_copy(p.material, mat);
+    for (int d = 0; d < 3; ++d) {
+      x(k, d) = T(0);
+      v(k, d) = T(0);
+      w(k, d) = T(0);
+    }
+  v(0, 0) = T(v0x);
+  v(0, 1) = T(v0y);
+  w(0, 2) = T(w0z);
+  r(0) = T(R0);
+  m(0) = T(2);
+  g(0) = 0;
+  mat(0) = 0;
+  if (pair) {
+    x(1, 0) = T(R0 + R1 - delta);
+    r(1) = T(R1);
+    m(1) = T(3);
+    g(1) = 1;
+    mat(1) = 0;
+  }
+  Kokkos::deep_copy(p.x, x);
+  Kokkos::deep_copy(p.v, v);
+  Kokkos::deep_copy(p.omega, w);
+  Kokkos::deep_copy(p.radius, r);
+  Kokkos::deep_copy(p.radius0, r);
+  Kokkos::deep_copy(p.mass, m);
+  Kokkos::deep_copy(p.gid, g);
+  Kokkos::deep_copy(p.material, mat);
   ContactList<D> c(1);
   auto f = Kokkos::create_mirror_view(c.first);
   auto s = Kokkos::create_mirror_view(c.second);
-  f(0) = 0; s(0) = pair ? 1 : 0;
-  Kokkos::deep_copy(c.first, f); Kokkos::deep_copy(c.second, s);
+  f(0) = 0;
+  s(0) = pair ? 1 : 0;
+  Kokkos::deep_copy(c.first, f);
+  Kokkos::deep_copy(c.second, s);
   ContactHistory<T, D> h(1, Model::history_size);
   if (history) {
     auto hh = Kokkos::create_mirror_view(h.data);
@@ -71,10 +93,18 @@ OnePass<Model> one_pass(const Model& model, double R0, double R1, double delta, 
     auto wn = Kokkos::create_mirror_view(wl.normal);
     auto wv = Kokkos::create_mirror_view(wl.velocity);
     auto wm = Kokkos::create_mirror_view(wl.material);
-    for (int d = 0; d < 3; ++d) { wp(0, d) = T(0); wn(0, d) = T(0); wv(0, d) = T(0); }
-    wp(0, 0) = T(R0 - delta); wn(0, 0) = T(-1); wm(0) = 1;
-    Kokkos::deep_copy(wl.point, wp); Kokkos::deep_copy(wl.normal, wn);
-    Kokkos::deep_copy(wl.velocity, wv); Kokkos::deep_copy(wl.material, wm);
+    for (int d = 0; d < 3; ++d) {
+      wp(0, d) = T(0);
+      wn(0, d) = T(0);
+      wv(0, d) = T(0);
+    }
+    wp(0, 0) = T(R0 - delta);
+    wn(0, 0) = T(-1);
+    wm(0) = 1;
+    Kokkos::deep_copy(wl.point, wp);
+    Kokkos::deep_copy(wl.normal, wn);
+    Kokkos::deep_copy(wl.velocity, wv);
+    Kokkos::deep_copy(wl.material, wm);
     compute_wall_forces(model, p, wl, c, h, T(dt), out);
   }
   OnePass<Model> o;
@@ -97,8 +127,10 @@ double authors_beta(double e) {
 
 }  // namespace
 
-TEMPLATE_TEST_CASE("MdrDamping::authors: F_d = beta sqrt(m* E* R*) d(delta)/dt while the MDR force is positive, "
-                   "and it may pull", "[mdr][conventions]", double, float) {
+TEMPLATE_TEST_CASE(
+    "MdrDamping::authors: F_d = beta sqrt(m* E* R*) d(delta)/dt while the MDR force is positive, "
+    "and it may pull",
+    "[mdr][conventions]", double, float) {
   using T = TestType;
   const double tol = std::is_same<T, float>::value ? 2e-5 : 1e-12;
   const double E = 1e9, nu = 0.3, e = 0.5, R0 = 1e-3, R1 = 2e-3, delta = 2e-6;  // elastic (Y inf)
@@ -139,8 +171,10 @@ TEMPLATE_TEST_CASE("MdrDamping::authors: F_d = beta sqrt(m* E* R*) d(delta)/dt w
   CHECK(Fw == Approx(Fw_law + authors_beta(e) * std::sqrt(2.0 * E / (1 - nu * nu) * R0) * 0.05).epsilon(tol));
 }
 
-TEMPLATE_TEST_CASE("MdrFriction::authors: constant k_t, full-radius rolling velocity, wall torque arm R, Coulomb "
-                   "bound on the damped force", "[mdr][conventions]", double, float) {
+TEMPLATE_TEST_CASE(
+    "MdrFriction::authors: constant k_t, full-radius rolling velocity, wall torque arm R, Coulomb "
+    "bound on the damped force",
+    "[mdr][conventions]", double, float) {
   using T = TestType;
   const double tol = std::is_same<T, float>::value ? 2e-5 : 1e-12;
   const double E = 1e9, nu = 0.3, R0 = 1e-3, R1 = 2e-3, delta = 2e-5, kt = 5e5, dt = 1e-7;
@@ -276,8 +310,10 @@ TEMPLATE_TEST_CASE("MdrSurfaceEnergyShare, MdrAdhesiveRadius, MdrRelease: the au
     // by 1%, so the force is the non-adhesive ellipse force exactly
     const double f = s.step(0.985 * d);
     const double f_na = mdr_ellipse_force(Eeff, 4 * R, 2 * R, 0.985 * d);
-    if (authors) CHECK(f == Approx(f_na).epsilon(std::is_same<T, float>::value ? 1e-5 : 1e-10));
-    else CHECK(f < f_na * (1 - 2e-5));
+    if (authors)
+      CHECK(f == Approx(f_na).epsilon(std::is_same<T, float>::value ? 1e-5 : 1e-10));
+    else
+      CHECK(f < f_na * (1 - 2e-5));
   }
 
   // MdrRelease::zero_overlap: an adhesive pair pulled just apart (delta < 0, above the critical

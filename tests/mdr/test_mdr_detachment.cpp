@@ -40,7 +40,8 @@ TEMPLATE_LIST_TEST_CASE("MDR detachment: one step past the critical overlap rele
   // and 2 mm: both sides yield on the way to 0.1 R0, and the critical overlap stays below 0.
   const double R0 = 1e-3, R1 = 2e-3;
   Material a = mdr_material(1e7, 0.3, 1e7 / 20, 300.0, 1.0), b = mdr_material(3e7, 0.25, 3e7 / 40, 600.0, 1.0);
-  a.friction = 0.5; b.friction = 0.5;
+  a.friction = 0.5;
+  b.friction = 0.5;
   const M model = M::create({a, b, rigid_wall_material()});
   // float: the kernel's overlap carries ~1e-7 R0 of position round-off, ~1e-5 of |delta_c| here
   const double eps = sizeof(T) >= 8 ? 1e-6 : 1e-3;
@@ -108,7 +109,7 @@ TEMPLATE_LIST_TEST_CASE("MDR detachment: one step past the critical overlap rele
         CHECK(all_zero(s.history()));  // normal and tangential history: a new contact next time
         CHECK(s.step(back) == F_fresh_back);
       } else {
-        CHECK(F < 0.0);                   // still adhesive: pulls
+        CHECK(F < 0.0);  // still adhesive: pulls
         CHECK(!all_zero(s.history()));
       }
     }
@@ -121,8 +122,8 @@ TEMPLATE_LIST_TEST_CASE("MDR detachment: elastic critical overlaps are JKR's (sp
   using T = typename TestType::scalar;
   using M = Mdr<T, Effects<kPlasticity | kAdhesion>, D>;
   const double E = 1e7, nu = 0.3, R = 1e-3, Eeff = E / (1 - nu * nu), gamma = 2.0;
-  const M model = M::create({mdr_material(E, nu, std::numeric_limits<double>::infinity(), gamma),
-                             rigid_wall_material()});
+  const M model =
+      M::create({mdr_material(E, nu, std::numeric_limits<double>::infinity(), gamma), rigid_wall_material()});
   // a_c / R ~ 0.03 here: the ellipse g_1D = 2R - 2 sqrt(R^2 - a^2) is JKR's a^2/R to (a/R)^2 ~ 1e-3
   const double tol = 3e-3;
   ContactStepper<M> wall(model, R, -1.0, 0, 1);
@@ -158,7 +159,8 @@ void detachment_fuzz(int n) {
     append_ramp(path, dm, dm * (1 - 2 * U(rng)), 1 + int(40 * U(rng)));
     bool finite = true;
     for (double d : path) finite = finite && std::isfinite(s.step(d));
-    if (!finite || !s.radii_finite()) continue;  // the path itself (MDR finite for every accepted input), not detachment
+    if (!finite || !s.radii_finite())
+      continue;  // the path itself (MDR finite for every accepted input), not detachment
     ++cases;
     INFO("case " << k << (pair ? " pair" : " wall") << " E " << Ea << " " << Eb << " R " << R0 << " " << R1);
     // the critical overlap lies within the driver's adhesive range (drivers/driver/models/mdr.cpp:
@@ -187,8 +189,9 @@ TEMPLATE_LIST_TEST_CASE("MDR detachment fuzz: random mixed pairs and walls, path
   detachment_fuzz<typename TestType::device, typename TestType::scalar, true>(200);
 }
 
-TEMPLATE_LIST_TEST_CASE("MDR critical displacement at the edges: finite, in [-Delta l(B/2), 0], a side holds above it only",
-                        "[mdr][adhesion][detach][guard]", BackendsAndScalars) {
+TEMPLATE_LIST_TEST_CASE(
+    "MDR critical displacement at the edges: finite, in [-Delta l(B/2), 0], a side holds above it only",
+    "[mdr][adhesion][detach][guard]", BackendsAndScalars) {
   using D = typename TestType::device;
   using T = typename TestType::scalar;
   // lambda = E A^2 / (pi gamma B) of the critical-radius cubic from 1e-12 (adhesion dominates: a_c
@@ -201,22 +204,23 @@ TEMPLATE_LIST_TEST_CASE("MDR critical displacement at the edges: finite, in [-De
     for (int k = 0; k < n; ++k) hl(k) = std::pow(10.0, -12.0 + 24.0 * k / (n - 1));
     Kokkos::deep_copy(lam, hl);
   }
-  Kokkos::parallel_for(Kokkos::RangePolicy<typename D::execution_space>(0, 1), KOKKOS_LAMBDA(int) {
-    for (int shape = 0; shape < 2; ++shape)
-      for (int k = 0; k < n; ++k) {
-        const T E = T(1), B = T(2), A = shape == 0 ? T(4) : T(0.02);
-        const T lambda = T(lam(k));
-        const T gamma = E * A * A / (constants<T>::pi * lambda * B);
-        const T dc = mdr_critical_displacement(E, gamma, A, B);
-        o(shape * n + k, 0) = dc;
-        o(shape * n + k, 1) = mdr_critical_extension(E, gamma, T(0.5) * B);
-        // the side law just above and just below d_c, from a stored a = B/2 (deepest contact)
-        const T step = math::max(T(1e-3) * math::fabs(dc), T(1e-30));
-        o(shape * n + k, 2) = mdr_adhesive_force(E, gamma, T(1), A, B, dc + step, T(0.5) * B).F;
-        o(shape * n + k, 3) = mdr_adhesive_force(E, gamma, T(1), A, B, dc - step, T(0.5) * B).F;
-        o(shape * n + k, 4) = mdr_adhesive_force(E, gamma, T(1), A, B, dc - step, T(0.5) * B).state;
-      }
-  });
+  Kokkos::parallel_for(
+      Kokkos::RangePolicy<typename D::execution_space>(0, 1), KOKKOS_LAMBDA(int) {
+        for (int shape = 0; shape < 2; ++shape)
+          for (int k = 0; k < n; ++k) {
+            const T E = T(1), B = T(2), A = shape == 0 ? T(4) : T(0.02);
+            const T lambda = T(lam(k));
+            const T gamma = E * A * A / (constants<T>::pi * lambda * B);
+            const T dc = mdr_critical_displacement(E, gamma, A, B);
+            o(shape * n + k, 0) = dc;
+            o(shape * n + k, 1) = mdr_critical_extension(E, gamma, T(0.5) * B);
+            // the side law just above and just below d_c, from a stored a = B/2 (deepest contact)
+            const T step = math::max(T(1e-3) * math::fabs(dc), T(1e-30));
+            o(shape * n + k, 2) = mdr_adhesive_force(E, gamma, T(1), A, B, dc + step, T(0.5) * B).F;
+            o(shape * n + k, 3) = mdr_adhesive_force(E, gamma, T(1), A, B, dc - step, T(0.5) * B).F;
+            o(shape * n + k, 4) = mdr_adhesive_force(E, gamma, T(1), A, B, dc - step, T(0.5) * B).state;
+          }
+      });
   auto h = to_host(o);
   for (int r = 0; r < 2 * n; ++r) {
     INFO("row " << r << " d_c " << h(r, 0));

@@ -50,11 +50,11 @@ TEMPLATE_LIST_TEST_CASE("MDR edges: one side loaded through delta = R to 1.6 R a
       // fall (p_Y of (16) with (21) falls with delta_max/R while a_max^2 of (36) flattens at R):
       // the published law, from about 0.94 R at these E/Y
       if (k > 0 && k < 300) CHECK(t.F[k] >= t.F[k - 1] * (1 - 1e-6));
-      if (k > n_load) CHECK(t.F[k] <= t.F[k - 1] * (1 + 1e-6));         // unloading: never harder
+      if (k > n_load) CHECK(t.F[k] <= t.F[k - 1] * (1 + 1e-6));  // unloading: never harder
     }
     // the area of (42) is continuous through delta = R (its delta-part peaks there)
     for (int k = 301; k < 700; ++k) CHECK(std::fabs(t.area[k] - t.area[k - 1]) <= 0.01 * t.area[k]);
-    CHECK(t.F.back() == 0.0);  // past separation
+    CHECK(t.F.back() == 0.0);                   // past separation
     if (std::isfinite(EY)) CHECK(floored > 0);  // the recovery-ratio guard of (35) was reached
   }
 }

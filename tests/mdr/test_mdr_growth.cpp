@@ -66,7 +66,10 @@ TEMPLATE_LIST_TEST_CASE("MDR growth: die compaction, lateral flats loaded only t
       // the secondary force of step k is evaluated with the radius before that step's update
       const double R_seen = k == 0 ? R0 : t.R[k - 1];
       if (R_seen == R0) CHECK(t.F_secondary[k] == 0.0);
-      if (t.F_secondary[k] > 0.0) { CHECK(R_seen > R0); seen = true; }
+      if (t.F_secondary[k] > 0.0) {
+        CHECK(R_seen > R0);
+        seen = true;
+      }
     }
     CHECK(seen);
     // the secondary contacts keep a force after unloading: radial expansion is permanent (Fig. 12(b))
@@ -123,10 +126,18 @@ TEMPLATE_LIST_TEST_CASE("MDR growth guards: denominator floor, radius cap, volum
   auto den = Kokkos::create_mirror_view(gs.denominator);
   auto eps = Kokkos::create_mirror_view(gs.eps_sum);
   // 0: normal (D = -2 pi); 1: D -> 0 (den = 4 pi R^2); 2: huge growth (capped); 3: eps_sum = -5
-  num(0) = T(1e-3); den(0) = T(0.5) * fourpi; eps(0) = T(-1e-3);
-  num(1) = T(1e-3); den(1) = fourpi;           eps(1) = T(0);
-  num(2) = T(1e3);  den(2) = T(0);             eps(2) = T(0);
-  num(3) = T(0);    den(3) = T(0);             eps(3) = T(-5);
+  num(0) = T(1e-3);
+  den(0) = T(0.5) * fourpi;
+  eps(0) = T(-1e-3);
+  num(1) = T(1e-3);
+  den(1) = fourpi;
+  eps(1) = T(0);
+  num(2) = T(1e3);
+  den(2) = T(0);
+  eps(2) = T(0);
+  num(3) = T(0);
+  den(3) = T(0);
+  eps(3) = T(-5);
   Kokkos::deep_copy(gs.numerator, num);
   Kokkos::deep_copy(gs.denominator, den);
   Kokkos::deep_copy(gs.eps_sum, eps);
@@ -148,10 +159,14 @@ TEMPLATE_LIST_TEST_CASE("MDR growth guards: denominator floor, radius cap, volum
   auto n2 = to_host(gs.numerator);
   for (int p = 0; p < 4; ++p) CHECK(n2(p) == 0.0);
   // a compressive numerator with D < 0 grows R: dR = -num / |D|; a huge one hits the cap
-  num(0) = T(-0.1); den(0) = T(0);                      // dR = 0.1 / (4 pi) = 0.00796
-  num(1) = T(-0.1); den(1) = fourpi;                    // floored D = -0.05 * 4 pi: dR = 0.159
-  num(2) = T(-1e3); den(2) = T(0);                      // capped at 1.5
-  num(3) = T(0);    den(3) = T(0);
+  num(0) = T(-0.1);
+  den(0) = T(0);  // dR = 0.1 / (4 pi) = 0.00796
+  num(1) = T(-0.1);
+  den(1) = fourpi;  // floored D = -0.05 * 4 pi: dR = 0.159
+  num(2) = T(-1e3);
+  den(2) = T(0);  // capped at 1.5
+  num(3) = T(0);
+  den(3) = T(0);
   Kokkos::deep_copy(gs.numerator, num);
   Kokkos::deep_copy(gs.denominator, den);
   Kokkos::deep_copy(gs.eps_sum, T(0));
@@ -185,8 +200,10 @@ TEMPLATE_LIST_TEST_CASE("MDR growth: high confinement (six flats closing in) sta
   CHECK(guards[kMdrGuardDenominator] + guards[kMdrGuardRadiusCap] > 0);  // the guards did act
 }
 
-TEMPLATE_TEST_CASE("MdrDeltaMax: growth at a fixed apparent overlap is plastic loading for running_max (the "
-                   "authors' code), not for MDR (19)", "[mdr][growth]", double, float) {
+TEMPLATE_TEST_CASE(
+    "MdrDeltaMax: growth at a fixed apparent overlap is plastic loading for running_max (the "
+    "authors' code), not for MDR (19)",
+    "[mdr][growth]", double, float) {
   using T = TestType;
   const Material m = mdr_material(1e9, 0.3, 5e6);
   // the model passes a side the shift of delta_max: R - R_o by (19), 0 for the running maximum
@@ -208,7 +225,7 @@ TEMPLATE_TEST_CASE("MdrDeltaMax: growth at a fixed apparent overlap is plastic l
       CHECK_FALSE(r.loading);                       // delta_o = d - g is below delta_o,max = d
       CHECK(r.delta_max == Approx(double(d + g)));  // (19): delta_max moved with R
     } else {
-      CHECK(r.loading);                             // delta = d is at its running maximum
+      CHECK(r.loading);  // delta = d is at its running maximum
       CHECK(r.delta_max == Approx(double(d)));
     }
   }

@@ -31,14 +31,22 @@ struct System {
   System(const std::vector<std::array<double, 3>>& pos, const std::vector<double>& radii,
          const std::vector<std::pair<int, int>>& pair_list, const std::vector<std::array<double, 6>>& wall_planes,
          const std::vector<std::pair<int, int>>& wall_list, int fields)
-      : p(static_cast<int>(pos.size())), w(static_cast<int>(wall_planes.size())),
-        pairs(static_cast<int>(pair_list.size())), wall_contacts(static_cast<int>(wall_list.size())),
-        ph(static_cast<int>(pair_list.size()), fields), wh(static_cast<int>(wall_list.size()), fields), x(pos) {
+      : p(static_cast<int>(pos.size())),
+        w(static_cast<int>(wall_planes.size())),
+        pairs(static_cast<int>(pair_list.size())),
+        wall_contacts(static_cast<int>(wall_list.size())),
+        ph(static_cast<int>(pair_list.size()), fields),
+        wh(static_cast<int>(wall_list.size()), fields),
+        x(pos) {
     const int n = p.n;
     auto r = Kokkos::create_mirror_view(p.radius0);
     auto m = Kokkos::create_mirror_view(p.mass);
     auto g = Kokkos::create_mirror_view(p.gid);
-    for (int i = 0; i < n; ++i) { r(i) = T(radii[i]); m(i) = T(1); g(i) = 1000 - 3 * i; }  // gids unrelated to order
+    for (int i = 0; i < n; ++i) {
+      r(i) = T(radii[i]);
+      m(i) = T(1);
+      g(i) = 1000 - 3 * i;
+    }  // gids unrelated to order
     Kokkos::deep_copy(p.radius0, r);
     Kokkos::deep_copy(p.radius, r);
     Kokkos::deep_copy(p.mass, m);
@@ -48,7 +56,10 @@ struct System {
     auto wn = Kokkos::create_mirror_view(w.normal);
     auto wm = Kokkos::create_mirror_view(w.material);
     for (int k = 0; k < w.n; ++k) {
-      for (int d = 0; d < 3; ++d) { wp(k, d) = T(wall_planes[k][d]); wn(k, d) = T(wall_planes[k][3 + d]); }
+      for (int d = 0; d < 3; ++d) {
+        wp(k, d) = T(wall_planes[k][d]);
+        wn(k, d) = T(wall_planes[k][3 + d]);
+      }
       wm(k) = 1;
     }
     Kokkos::deep_copy(w.point, wp);
@@ -60,7 +71,10 @@ struct System {
   static void fill(ContactList<D>& c, const std::vector<std::pair<int, int>>& l) {
     auto f = Kokkos::create_mirror_view(c.first);
     auto s = Kokkos::create_mirror_view(c.second);
-    for (std::size_t k = 0; k < l.size(); ++k) { f(k) = l[k].first; s(k) = l[k].second; }
+    for (std::size_t k = 0; k < l.size(); ++k) {
+      f(k) = l[k].first;
+      s(k) = l[k].second;
+    }
     Kokkos::deep_copy(c.first, f);
     Kokkos::deep_copy(c.second, s);
   }
@@ -144,7 +158,9 @@ TEMPLATE_LIST_TEST_CASE("history_from_overlaps, MDR wall contact: equals a load 
     init_model.bind(init.p);
     {
       auto f = Kokkos::create_mirror_view(init.p.force);
-      f(0, 0) = T(1.5); f(0, 1) = T(-2.5); f(0, 2) = T(3.5);  // forces must stay untouched
+      f(0, 0) = T(1.5);
+      f(0, 1) = T(-2.5);
+      f(0, 2) = T(3.5);  // forces must stay untouched
       Kokkos::deep_copy(init.p.force, f);
     }
     const HistoryFromOverlapsReport rep =
@@ -174,12 +190,12 @@ TEMPLATE_LIST_TEST_CASE("history_from_overlaps, MDR wall contact: equals a load 
     hi.erase(hi.begin(), hi.begin() + M::pair_fields);
     CHECK(hi[0] == Approx(hr[0]).epsilon(eps * 10));  // delta_o_max = delta_o
     CHECK(hi[0] == Approx(target).epsilon(eps * 10));
-    CHECK(hi[1] == 1.0);                              // yielded
+    CHECK(hi[1] == 1.0);  // yielded
     CHECK(hr[1] == 1.0);
     CHECK(hi[2] == Approx(hr[2]).epsilon(eps * 10));  // c_A
     // delta_p = delta_max - (A/2) r: its change with R is that of delta_max = delta_o,max + growth
     CHECK(std::fabs(hi[3] - hr[3]) < tol_growth * growth + eps * R0);
-    CHECK(hi[4] == Approx(hr[4]).epsilon(eps * 10));  // delta_o_prev = delta_o
+    CHECK(hi[4] == Approx(hr[4]).epsilon(eps * 10));                        // delta_o_prev = delta_o
     CHECK(std::fabs(hi[5] - hr[5]) < tol_growth * std::fabs(hr[5]) + eps);  // eps_prev (38): F (R - delta) / V
     // The next force pass at the same position: the same force, and no jump of R
     force_pass(ref_model, ref);
@@ -279,9 +295,10 @@ std::vector<std::array<double, 3>> fcc_cluster(double R, double delta, std::vect
 // (a side feeds (37) only in steps where its own delta_o is at its maximum, a binary test that the
 // neighbours' growth flips): measured, loads in 500, 1000 and 4000 steps differ from the 2000-step
 // one by 2.2%, 2.5% and 3.0% of the growth, and K = 100 increments by 3.1%.
-TEMPLATE_LIST_TEST_CASE("history_from_overlaps, MDR fcc cluster at 0.2 R: equals an affine quasi-static compression; "
-                        "a fresh start jumps",
-                        "[mdr][initial_history]", Backends) {
+TEMPLATE_LIST_TEST_CASE(
+    "history_from_overlaps, MDR fcc cluster at 0.2 R: equals an affine quasi-static compression; "
+    "a fresh start jumps",
+    "[mdr][initial_history]", Backends) {
   using D = TestType;
   using T = double;
   using M = Mdr<T, Effects<kPlasticity | kRadiusGrowth>, D>;

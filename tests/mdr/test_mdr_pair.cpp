@@ -22,7 +22,12 @@ std::vector<double> run_pair(const Model& model, double R0, double R1, int gid0,
   auto r = Kokkos::create_mirror_view(p.radius);
   auto m = Kokkos::create_mirror_view(p.mass);
   auto g = Kokkos::create_mirror_view(p.gid);
-  r(0) = T(R0); r(1) = T(R1); m(0) = T(1); m(1) = T(1); g(0) = gid0; g(1) = gid1;
+  r(0) = T(R0);
+  r(1) = T(R1);
+  m(0) = T(1);
+  m(1) = T(1);
+  g(0) = gid0;
+  g(1) = gid1;
   Kokkos::deep_copy(p.radius, r);
   Kokkos::deep_copy(p.radius0, r);
   Kokkos::deep_copy(p.mass, m);
@@ -31,7 +36,8 @@ std::vector<double> run_pair(const Model& model, double R0, double R1, int gid0,
   {
     auto f = Kokkos::create_mirror_view(c.first);
     auto s = Kokkos::create_mirror_view(c.second);
-    f(0) = list_01 ? 0 : 1; s(0) = list_01 ? 1 : 0;
+    f(0) = list_01 ? 0 : 1;
+    s(0) = list_01 ? 1 : 0;
     Kokkos::deep_copy(c.first, f);
     Kokkos::deep_copy(c.second, s);
   }
@@ -115,30 +121,38 @@ TEMPLATE_LIST_TEST_CASE("MDR pair split: radical plane, 0.75 R cap, residuals re
   using D = typename TestType::device;
   using T = typename TestType::scalar;
   Kokkos::View<double**, Kokkos::LayoutRight, D> o("o", 8, 2);
-  Kokkos::parallel_for(Kokkos::RangePolicy<typename D::execution_space>(0, 1), KOKKOS_LAMBDA(int) {
-    const T R0 = 1, R1 = 3;
-    // at dmax: radical-plane caps; the smaller sphere takes the larger one
-    MdrSideOverlaps<T> s = mdr_split_overlap(T(0.2), T(0.2), R0, R1, T(0), T(0));
-    o(0, 0) = s.d0; o(0, 1) = s.d1;
-    // cap: dmax = 1.5 would give the small sphere a cap above 0.75 R0
-    s = mdr_split_overlap(T(1.5), T(1.5), R0, R1, T(0), T(0));
-    o(1, 0) = s.d0; o(1, 1) = s.d1;
-    // unloading: at delta = dp0 + dp1 both sides sit at their residuals
-    s = mdr_split_overlap(T(0.15), T(0.3), R0, R1, T(0.1), T(0.05));
-    o(2, 0) = s.d0; o(2, 1) = s.d1;
-    // halfway between dmax and the residual sum
-    s = mdr_split_overlap(T(0.225), T(0.3), R0, R1, T(0.1), T(0.05));
-    o(3, 0) = s.d0; o(3, 1) = s.d1;
-    // guard: coincident centres (dmax >= R0 + R1)
-    s = mdr_split_overlap(T(4.5), T(4.5), R0, R1, T(0), T(0));
-    o(4, 0) = s.d0; o(4, 1) = s.d1;
-    // guard: residuals summing to dmax (no elastic recovery)
-    s = mdr_split_overlap(T(0.25), T(0.3), R0, R1, T(0.2), T(0.1));
-    o(5, 0) = s.d0; o(5, 1) = s.d1;
-    // never pressed (dmax = 0), apart: radical plane at the current overlap
-    s = mdr_split_overlap(T(-0.01), T(0), R0, R1, T(0), T(0));
-    o(6, 0) = s.d0; o(6, 1) = s.d1;
-  });
+  Kokkos::parallel_for(
+      Kokkos::RangePolicy<typename D::execution_space>(0, 1), KOKKOS_LAMBDA(int) {
+        const T R0 = 1, R1 = 3;
+        // at dmax: radical-plane caps; the smaller sphere takes the larger one
+        MdrSideOverlaps<T> s = mdr_split_overlap(T(0.2), T(0.2), R0, R1, T(0), T(0));
+        o(0, 0) = s.d0;
+        o(0, 1) = s.d1;
+        // cap: dmax = 1.5 would give the small sphere a cap above 0.75 R0
+        s = mdr_split_overlap(T(1.5), T(1.5), R0, R1, T(0), T(0));
+        o(1, 0) = s.d0;
+        o(1, 1) = s.d1;
+        // unloading: at delta = dp0 + dp1 both sides sit at their residuals
+        s = mdr_split_overlap(T(0.15), T(0.3), R0, R1, T(0.1), T(0.05));
+        o(2, 0) = s.d0;
+        o(2, 1) = s.d1;
+        // halfway between dmax and the residual sum
+        s = mdr_split_overlap(T(0.225), T(0.3), R0, R1, T(0.1), T(0.05));
+        o(3, 0) = s.d0;
+        o(3, 1) = s.d1;
+        // guard: coincident centres (dmax >= R0 + R1)
+        s = mdr_split_overlap(T(4.5), T(4.5), R0, R1, T(0), T(0));
+        o(4, 0) = s.d0;
+        o(4, 1) = s.d1;
+        // guard: residuals summing to dmax (no elastic recovery)
+        s = mdr_split_overlap(T(0.25), T(0.3), R0, R1, T(0.2), T(0.1));
+        o(5, 0) = s.d0;
+        o(5, 1) = s.d1;
+        // never pressed (dmax = 0), apart: radical plane at the current overlap
+        s = mdr_split_overlap(T(-0.01), T(0), R0, R1, T(0), T(0));
+        o(6, 0) = s.d0;
+        o(6, 1) = s.d1;
+      });
   auto h = to_host(o);
   const double tol = sizeof(T) >= 8 ? 1e-12 : 1e-5;
   // radical plane: h0 = d (2 R1 - d) / (2 (R0 + R1 - d))
@@ -163,7 +177,10 @@ TEMPLATE_LIST_TEST_CASE("MDR pair split: radical plane, 0.75 R cap, residuals re
   CHECK(h(5, 0) >= 0.2 - below - tol);
   CHECK(h(5, 1) >= e1 - below - tol);
   CHECK(h(5, 0) + h(5, 1) == Approx(0.25).epsilon(tol));
-  for (int r = 0; r < 7; ++r) { CHECK(std::isfinite(h(r, 0))); CHECK(std::isfinite(h(r, 1))); }
+  for (int r = 0; r < 7; ++r) {
+    CHECK(std::isfinite(h(r, 0)));
+    CHECK(std::isfinite(h(r, 1)));
+  }
   CHECK(h(4, 0) == Approx(0.75).epsilon(tol));
   CHECK(h(4, 0) + h(4, 1) == Approx(4.5).epsilon(tol));
   CHECK(h(6, 0) < 0.0);
@@ -177,8 +194,8 @@ TEMPLATE_LIST_TEST_CASE("MDR pair, adhesive and elastic: JKR between the two sph
   using M = Mdr<T, Effects<kPlasticity | kAdhesion>, D>;
   const double E = 1.0, R = 1.0, Eeff = E / (1 - kNu * kNu);
   const double gamma = Eeff * R / 2.2e4;
-  const M model = M::create({mdr_material(E, kNu, std::numeric_limits<double>::infinity(), gamma),
-                             rigid_wall_material()});
+  const M model =
+      M::create({mdr_material(E, kNu, std::numeric_limits<double>::infinity(), gamma), rigid_wall_material()});
   std::vector<double> total;
   append_ramp(total, 0.0, 8e-3 * R, 200);
   append_ramp(total, 8e-3 * R, -0.01 * R, 9000);

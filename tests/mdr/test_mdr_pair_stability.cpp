@@ -88,8 +88,9 @@ TEMPLATE_TEST_CASE("MDR pair split: continuous, sums to delta, bounded by residu
   CHECK(beyond_dmax_residuals > 300);
 }
 
-TEMPLATE_LIST_TEST_CASE("MDR pair with growth, reported NaN reproduction 1: one step to 0.8 R_small, then unload (radii 0.1, 1 mm)",
-                        "[mdr][pair][growth][stability]", BackendsAndScalars) {
+TEMPLATE_LIST_TEST_CASE(
+    "MDR pair with growth, reported NaN reproduction 1: one step to 0.8 R_small, then unload (radii 0.1, 1 mm)",
+    "[mdr][pair][growth][stability]", BackendsAndScalars) {
   // Old split: NaN at unloading step 68 (double) / 20 (float): the residuals summed to more than
   // dmax and the floored denominator threw a side 1e7 R deep.
   using D = typename TestType::device;
@@ -157,8 +158,8 @@ TEMPLATE_LIST_TEST_CASE("MDR elastic pair, unequal radii and moduli: a closed cy
       for (int m1 : {0, 1}) {
         const PairTrace t = run_pair_path<M, D>(model, Rs, Rl, m1, path);
         const CycleWork w = cycle_work(t.delta, t.F);
-        INFO("radius ratio " << ratio << ", modulus ratio " << Eratio << ", m1 " << m1 << ": in " << w.in
-                             << ", out " << w.out << ", relative " << (w.out - w.in) / w.in);
+        INFO("radius ratio " << ratio << ", modulus ratio " << Eratio << ", m1 " << m1 << ": in " << w.in << ", out "
+                             << w.out << ", relative " << (w.out - w.in) / w.in);
         CHECK(t.finite);
         REQUIRE(w.in > 0);
         CHECK(w.out <= w.in * (1 + 1e-9));
@@ -209,11 +210,11 @@ TEMPLATE_LIST_TEST_CASE("MDR pair: the flat balances the sides' scaled forces; y
     double R0, R1, E0, E1, Y0, Y1;
   };
   const Case cases[] = {
-      {1e-3, 1e-3, 1e8, 1e8, 2e6, kInf},    // equal radii, one side elastic
-      {1e-3, 3e-3, 1e8, 1e8, 2e6, 2e6},     // radius ratio 3, one material
-      {1e-3, 3e-2, 1e8, 3e9, 2e6, 1e7},     // radius ratio 30, modulus ratio 30
-      {2e-3, 1e-4, 5e9, 1e7, kInf, 1e5},    // small soft plastic on large stiff elastic
-      {1e-3, 1e-3, 1e8, 1e8, 1e6, 1e6},     // equal spheres: delta/2 each, no solve
+      {1e-3, 1e-3, 1e8, 1e8, 2e6, kInf},  // equal radii, one side elastic
+      {1e-3, 3e-3, 1e8, 1e8, 2e6, 2e6},   // radius ratio 3, one material
+      {1e-3, 3e-2, 1e8, 3e9, 2e6, 1e7},   // radius ratio 30, modulus ratio 30
+      {2e-3, 1e-4, 5e9, 1e7, kInf, 1e5},  // small soft plastic on large stiff elastic
+      {1e-3, 1e-3, 1e8, 1e8, 1e6, 1e6},   // equal spheres: delta/2 each, no solve
   };
   for (const Case& c : cases) {
     CAPTURE(c.R0, c.R1, c.E0, c.E1, c.Y0, c.Y1);
@@ -250,7 +251,8 @@ TEMPLATE_LIST_TEST_CASE("MDR pair: the flat balances the sides' scaled forces; y
       if (F.back() != 0.0) {
         CHECK(side(0, 1) + side(1, 1) == Approx(s.overlap()).epsilon(same).margin(1e-6 * h));
         Fpeak = std::max(Fpeak, std::fabs(F.back()));
-        CHECK(F.back() == Approx(0.5 * (F0 + F1)).epsilon(same).margin(same * 1e-2 * Fpeak));  // margin: near separation
+        CHECK(F.back() ==
+              Approx(0.5 * (F0 + F1)).epsilon(same).margin(same * 1e-2 * Fpeak));  // margin: near separation
       }
       yielded = std::max(yielded, static_cast<int>(side(0, 2)));
     }
@@ -295,7 +297,9 @@ TEMPLATE_LIST_TEST_CASE("MDR pair_split geometric: the authors' radical plane wh
       if (R1 == R0) CHECK(Fg == Approx(Fb).epsilon(tol * 10));  // equal spheres: both splits are delta/2
     }
     // unequal yielded spheres: the balance moves the flat off the radical plane (the balanced pair split)
-    if (R1 != R0) CHECK(worst_split_gap > 1e-3);
-    else CHECK(worst_split_gap < tol);
+    if (R1 != R0)
+      CHECK(worst_split_gap > 1e-3);
+    else
+      CHECK(worst_split_gap < tol);
   }
 }

@@ -16,7 +16,9 @@ double eeff(double E) { return E / (1.0 - kNu * kNu); }
 double hertz(double E_eff, double R, double d) { return 4.0 / 3.0 * E_eff * std::sqrt(R) * std::pow(d, 1.5); }
 double hardening(double Y, double x) { return Y * (1.75 * std::exp(-4.4 * x) + 1.0); }
 template <class T>
-double rel_tol_of() { return sizeof(T) >= 8 ? 1e-12 : 2e-5; }
+double rel_tol_of() {
+  return sizeof(T) >= 8 ? 1e-12 : 2e-5;
+}
 }  // namespace
 
 TEMPLATE_LIST_TEST_CASE("MDR side: small overlaps follow Hertz (25)", "[mdr][side]", BackendsAndScalars) {
@@ -114,10 +116,10 @@ TEMPLATE_LIST_TEST_CASE("MDR side: unloading and reloading below delta_max retra
   for (double dmax : {0.1, 0.2, 0.35, 0.5, 0.6}) {
     std::vector<double> path;
     const int n = 400;
-    append_ramp(path, 0.0, dmax, n);          // load
-    append_ramp(path, dmax, 0.0, n);          // unload to zero overlap
-    append_ramp(path, 0.0, dmax, n);          // reload
-    append_ramp(path, dmax, dmax * 1.05, 20); // past delta_max: plastic loading again
+    append_ramp(path, 0.0, dmax, n);           // load
+    append_ramp(path, dmax, 0.0, n);           // unload to zero overlap
+    append_ramp(path, 0.0, dmax, n);           // reload
+    append_ramp(path, dmax, dmax * 1.05, 20);  // past delta_max: plastic loading again
     const SideTrace t = run_side_path<D, T, true, false>(c, 0.0, 1.0, R, path);
     const double Fpeak = t.F[n - 1];
     INFO("delta_max/R = " << dmax);
@@ -146,26 +148,27 @@ TEMPLATE_LIST_TEST_CASE("MDR ellipse guards: force, gap and width at the ends of
   using D = typename TestType::device;
   using T = typename TestType::scalar;
   Kokkos::View<double*, D> o("o", 16);
-  Kokkos::parallel_for(Kokkos::RangePolicy<typename D::execution_space>(0, 1), KOKKOS_LAMBDA(int) {
-    const T E = 1, A = 4, B = 2;
-    o(0) = mdr_ellipse_force(E, A, B, T(0));              // d = 0
-    o(1) = mdr_ellipse_force(E, A, B, T(-1));             // d < 0
-    o(2) = mdr_ellipse_force(E, A, B, A);                 // fully submerged: E A B pi / 4
-    o(3) = mdr_ellipse_force(E, A, B, T(10) * A);         // beyond: clamped
-    o(4) = mdr_ellipse_force(E, A, B, T(0.5) * A);        // equator: E A B pi / 8 (F_max, (32))
-    // both sides of the series/direct switch at theta = 0.25 (x = sin^2(0.125))
-    const T xs = math::sin(T(0.125)) * math::sin(T(0.125));
-    o(5) = mdr_ellipse_force(E, A, B, A * xs * T(1 - 1e-6));
-    o(6) = mdr_ellipse_force(E, A, B, A * xs * T(1 + 1e-6));
-    o(7) = mdr_ellipse_gap(A, B, T(0.5) * B);             // a = B/2: A/2
-    o(8) = mdr_ellipse_gap(A, B, B);                      // a > B/2: clamped
-    o(9) = mdr_ellipse_gap(A, B, T(1e-4));                // small a: A a^2 / B^2
-    o(10) = mdr_ellipse_contact_radius(A, B, T(0.5) * A); // B/2
-    o(11) = mdr_ellipse_contact_radius(A, B, A);          // beyond the equator: B/2
-    o(12) = mdr_ellipse_contact_radius(A, B, T(-1));      // no contact
-    o(13) = mdr_ellipse_gap_slope(A, B, T(0.5) * B);      // infinite slope reported as 0
-    o(14) = mdr_ellipse_force(E, A, B, T(1e-30));         // tiny depth: no underflow to NaN
-  });
+  Kokkos::parallel_for(
+      Kokkos::RangePolicy<typename D::execution_space>(0, 1), KOKKOS_LAMBDA(int) {
+        const T E = 1, A = 4, B = 2;
+        o(0) = mdr_ellipse_force(E, A, B, T(0));        // d = 0
+        o(1) = mdr_ellipse_force(E, A, B, T(-1));       // d < 0
+        o(2) = mdr_ellipse_force(E, A, B, A);           // fully submerged: E A B pi / 4
+        o(3) = mdr_ellipse_force(E, A, B, T(10) * A);   // beyond: clamped
+        o(4) = mdr_ellipse_force(E, A, B, T(0.5) * A);  // equator: E A B pi / 8 (F_max, (32))
+        // both sides of the series/direct switch at theta = 0.25 (x = sin^2(0.125))
+        const T xs = math::sin(T(0.125)) * math::sin(T(0.125));
+        o(5) = mdr_ellipse_force(E, A, B, A * xs * T(1 - 1e-6));
+        o(6) = mdr_ellipse_force(E, A, B, A * xs * T(1 + 1e-6));
+        o(7) = mdr_ellipse_gap(A, B, T(0.5) * B);              // a = B/2: A/2
+        o(8) = mdr_ellipse_gap(A, B, B);                       // a > B/2: clamped
+        o(9) = mdr_ellipse_gap(A, B, T(1e-4));                 // small a: A a^2 / B^2
+        o(10) = mdr_ellipse_contact_radius(A, B, T(0.5) * A);  // B/2
+        o(11) = mdr_ellipse_contact_radius(A, B, A);           // beyond the equator: B/2
+        o(12) = mdr_ellipse_contact_radius(A, B, T(-1));       // no contact
+        o(13) = mdr_ellipse_gap_slope(A, B, T(0.5) * B);       // infinite slope reported as 0
+        o(14) = mdr_ellipse_force(E, A, B, T(1e-30));          // tiny depth: no underflow to NaN
+      });
   auto h = to_host(o);
   const double tol = sizeof(T) >= 8 ? 1e-13 : 1e-5;
   CHECK(h(0) == 0.0);
@@ -191,22 +194,28 @@ TEMPLATE_LIST_TEST_CASE("MDR plastic shape guards: z_R -> 0, delta_max past the 
   using T = typename TestType::scalar;
   const auto c = side_constants<T>(1.0, kNu, 1.0 / 25.0);
   Kokkos::View<double**, Kokkos::LayoutRight, D> o("o", 6, 6);
-  Kokkos::parallel_for(Kokkos::RangePolicy<typename D::execution_space>(0, 1), KOKKOS_LAMBDA(int) {
-    const T R = 1;
-    const T dY = c.x_yield * R;
-    const T cA = constants<T>::pi * (dY * dY - dY * R);
-    const T dms[6] = {T(0.3), T(0.75), T(0.95), T(1.0), T(1.5), T(3.0)};
-    for (int k = 0; k < 6; ++k) {
-      const MdrPlasticShape<T> s = mdr_plastic_shape(c, dms[k], R, cA);
-      o(k, 0) = s.a_max; o(k, 1) = s.A; o(k, 2) = s.ratio; o(k, 3) = s.delta_p;
-      o(k, 4) = s.ratio_floored ? 1 : 0;
-      // the force along an unloading from there stays finite
-      MdrSideState<T> st;
-      st.delta_o_max = dms[k]; st.yielded = 1; st.c_A = cA;
-      const MdrSideResult<T> r = mdr_side_force<true, false>(c, T(0), T(1), dms[k] * T(0.9), R, T(0), st);
-      o(k, 5) = r.F;
-    }
-  });
+  Kokkos::parallel_for(
+      Kokkos::RangePolicy<typename D::execution_space>(0, 1), KOKKOS_LAMBDA(int) {
+        const T R = 1;
+        const T dY = c.x_yield * R;
+        const T cA = constants<T>::pi * (dY * dY - dY * R);
+        const T dms[6] = {T(0.3), T(0.75), T(0.95), T(1.0), T(1.5), T(3.0)};
+        for (int k = 0; k < 6; ++k) {
+          const MdrPlasticShape<T> s = mdr_plastic_shape(c, dms[k], R, cA);
+          o(k, 0) = s.a_max;
+          o(k, 1) = s.A;
+          o(k, 2) = s.ratio;
+          o(k, 3) = s.delta_p;
+          o(k, 4) = s.ratio_floored ? 1 : 0;
+          // the force along an unloading from there stays finite
+          MdrSideState<T> st;
+          st.delta_o_max = dms[k];
+          st.yielded = 1;
+          st.c_A = cA;
+          const MdrSideResult<T> r = mdr_side_force<true, false>(c, T(0), T(1), dms[k] * T(0.9), R, T(0), st);
+          o(k, 5) = r.F;
+        }
+      });
   auto h = to_host(o);
   for (int k = 0; k < 6; ++k) {
     for (int q = 0; q < 6; ++q) CHECK(std::isfinite(h(k, q)));

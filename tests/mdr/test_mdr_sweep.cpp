@@ -84,8 +84,8 @@ TEST_CASE("MDR report: two-flat peak forces, residual displacements, pull-off fo
   using M = Mdr<T, Effects<kPlasticity | kRadiusGrowth>, D>;
   const double E = 1.0, R0 = 1.0;
   std::printf("two flats, delta_o per flat; F/(E R_o^2) at delta_o/R_o = 0.5; residual delta_o/R_o\n");
-  std::printf("%8s %12s %12s %10s %10s %12s %12s\n", "E/Y", "F_peak", "residual", "R/R_o", "V/V_o",
-              "A/(pi R_o^2)", "p/Y");
+  std::printf("%8s %12s %12s %10s %10s %12s %12s\n", "E/Y", "F_peak", "residual", "R/R_o", "V/V_o", "A/(pi R_o^2)",
+              "p/Y");
   for (double EY : {6.25, 12.5, 25.0, 50.0, 100.0, 200.0}) {
     const M model = M::create({mdr_material(E, kNu, E / EY), rigid_wall_material()});
     std::vector<double> path;
@@ -95,9 +95,12 @@ TEST_CASE("MDR report: two-flat peak forces, residual displacements, pull-off fo
     const int peak = 4999;
     double residual = -1;
     for (size_t k = 5000; k < t.F_primary.size(); ++k)
-      if (t.F_primary[k] <= 0.0) { residual = t.delta_o[k]; break; }
-    std::printf("%8.2f %12.5e %12.5f %10.5f %10.6f %12.5f %12.5f\n", EY, t.F_primary[peak], residual,
-                t.R[peak], t.V[peak] / (4.0 / 3.0 * M_PI), t.area[peak] / M_PI, t.pressure[peak] * EY);
+      if (t.F_primary[k] <= 0.0) {
+        residual = t.delta_o[k];
+        break;
+      }
+    std::printf("%8.2f %12.5e %12.5f %10.5f %10.6f %12.5f %12.5f\n", EY, t.F_primary[peak], residual, t.R[peak],
+                t.V[peak] / (4.0 / 3.0 * M_PI), t.area[peak] / M_PI, t.pressure[peak] * EY);
   }
   std::printf("\npull-off (largest tension) / (pi gamma R), single side, E* R/gamma = 2.2e4\n");
   const double Eeff = E / (1 - kNu * kNu);
@@ -120,8 +123,8 @@ TEST_CASE("MDR report: two-flat peak forces, residual displacements, pull-off fo
           const SideTrace t = run_side_path<D, T, true, true>(c, gamma, xi, R0, path);
           double m = 0;
           for (double f : t.F) m = std::max(m, -f);
-          std::printf("xi=%d E/Y=%-6g delta_max/R=%-6g yielded=%d steps=%6d  F_pull/(pi gamma R) = %.5f%s\n", xi,
-                      EY, dmax, tp.yielded.back(), n, m / (M_PI * gamma * R0),
+          std::printf("xi=%d E/Y=%-6g delta_max/R=%-6g yielded=%d steps=%6d  F_pull/(pi gamma R) = %.5f%s\n", xi, EY,
+                      dmax, tp.yielded.back(), n, m / (M_PI * gamma * R0),
                       last > 0 ? (std::fabs(m - last) / m < 1e-3 ? "  (converged to 1e-3)" : "  (NOT converged)") : "");
           last = m;
         }

@@ -18,8 +18,8 @@ struct OverlapTrace {
 };
 
 template <class Model>
-OverlapTrace drive_overlap(const Model& model, const std::vector<double>& alphas, double R_eff,
-                           int pair = 0, double m_eff = 1.0) {
+OverlapTrace drive_overlap(const Model& model, const std::vector<double>& alphas, double R_eff, int pair = 0,
+                           double m_eff = 1.0) {
   using T = typename Model::scalar_type;
   using D = typename Model::device_type;
   const int n = static_cast<int>(alphas.size());
@@ -32,25 +32,43 @@ OverlapTrace drive_overlap(const Model& model, const std::vector<double>& alphas
   }
   ContactHistory<T, D> hist(1, Model::history_size > 0 ? Model::history_size : 1);
   const T R = T(R_eff), m = T(m_eff);
-  Kokkos::parallel_for(Kokkos::RangePolicy<typename D::execution_space>(0, 1), KOKKOS_LAMBDA(int) {
-    const HistoryRow<T, D> row{hist.data, 0, 0};
-    for (int k = 0; k < n; ++k) {
-      ContactGeometry<T> g;
-      g.pair = pair;
-      g.delta = a(k);
-      g.R_i = R; g.R_eff = R; g.m_eff = m;
-      const NormalForce<T> nf = model.normal(g, row);
-      f(k) = nf.f; kn(k) = nf.k_n; damp(k) = nf.damping; kt(k) = nf.k_t; act(k) = nf.active ? 1 : 0;
-      h0(k) = Model::normal_history_size > 0 ? row(0) : T(0);
-      h1(k) = Model::normal_history_size > 1 ? row(1) : T(0);
-    }
-  });
-  auto fh = to_host(f); auto knh = to_host(kn); auto dh = to_host(damp); auto kth = to_host(kt);
-  auto acth = to_host(act); auto h0h = to_host(h0); auto h1h = to_host(h1);
+  Kokkos::parallel_for(
+      Kokkos::RangePolicy<typename D::execution_space>(0, 1), KOKKOS_LAMBDA(int) {
+        const HistoryRow<T, D> row{hist.data, 0, 0};
+        for (int k = 0; k < n; ++k) {
+          ContactGeometry<T> g;
+          g.pair = pair;
+          g.delta = a(k);
+          g.R_i = R;
+          g.R_eff = R;
+          g.m_eff = m;
+          const NormalForce<T> nf = model.normal(g, row);
+          f(k) = nf.f;
+          kn(k) = nf.k_n;
+          damp(k) = nf.damping;
+          kt(k) = nf.k_t;
+          act(k) = nf.active ? 1 : 0;
+          h0(k) = Model::normal_history_size > 0 ? row(0) : T(0);
+          h1(k) = Model::normal_history_size > 1 ? row(1) : T(0);
+        }
+      });
+  auto fh = to_host(f);
+  auto knh = to_host(kn);
+  auto dh = to_host(damp);
+  auto kth = to_host(kt);
+  auto acth = to_host(act);
+  auto h0h = to_host(h0);
+  auto h1h = to_host(h1);
   OverlapTrace t;
   for (int k = 0; k < n; ++k) {
-    t.alpha.push_back(alphas[k]); t.f.push_back(fh(k)); t.k_n.push_back(knh(k)); t.damping.push_back(dh(k));
-    t.k_t.push_back(kth(k)); t.active.push_back(acth(k)); t.history0.push_back(h0h(k)); t.history1.push_back(h1h(k));
+    t.alpha.push_back(alphas[k]);
+    t.f.push_back(fh(k));
+    t.k_n.push_back(knh(k));
+    t.damping.push_back(dh(k));
+    t.k_t.push_back(kth(k));
+    t.active.push_back(acth(k));
+    t.history0.push_back(h0h(k));
+    t.history1.push_back(h1h(k));
   }
   return t;
 }

@@ -40,15 +40,24 @@ struct WallImpact {
       auto r = Kokkos::create_mirror_view(p.radius);
       auto I = Kokkos::create_mirror_view(p.inertia);
       auto mat = Kokkos::create_mirror_view(p.material);
-      ms(0) = m; r(0) = R; I(0) = 0.4 * m * R * R; mat(0) = 0;
-      Kokkos::deep_copy(p.mass, ms); Kokkos::deep_copy(p.radius, r); Kokkos::deep_copy(p.radius0, r);
-      Kokkos::deep_copy(p.inertia, I); Kokkos::deep_copy(p.material, mat);
+      ms(0) = m;
+      r(0) = R;
+      I(0) = 0.4 * m * R * R;
+      mat(0) = 0;
+      Kokkos::deep_copy(p.mass, ms);
+      Kokkos::deep_copy(p.radius, r);
+      Kokkos::deep_copy(p.radius0, r);
+      Kokkos::deep_copy(p.inertia, I);
+      Kokkos::deep_copy(p.material, mat);
       auto wn = Kokkos::create_mirror_view(w.normal);
       auto wm = Kokkos::create_mirror_view(w.material);
       Kokkos::deep_copy(wn, 0.0);
-      wn(0, 0) = 1.0; wm(0) = 1;
-      Kokkos::deep_copy(w.normal, wn); Kokkos::deep_copy(w.material, wm);
-      Kokkos::deep_copy(c.first, 0); Kokkos::deep_copy(c.second, 0);
+      wn(0, 0) = 1.0;
+      wm(0) = 1;
+      Kokkos::deep_copy(w.normal, wn);
+      Kokkos::deep_copy(w.material, wm);
+      Kokkos::deep_copy(c.first, 0);
+      Kokkos::deep_copy(c.second, 0);
     }
     Kokkos::deep_copy(x, 0.0);
     Kokkos::deep_copy(v, 0.0);
@@ -113,8 +122,8 @@ void run_table6(double e0, const double (&expected)[4], double rel_tol, bool aga
     const auto analytic = nan2022_sticking_velocities(pc, R, m);
     const double v = sim.critical_velocity(0.5 * analytic.V_ys, 3.0 * analytic.V_ys, -0.01 * c.alpha_0);
     const double target = against_analytic ? analytic.V_ys : expected[k];
-    INFO("R = " << R << ", e0 = " << e0 << ": simulated V_ys = " << v << ", analytic (e0 = 1) "
-                << analytic.V_ys << ", expected " << target);
+    INFO("R = " << R << ", e0 = " << e0 << ": simulated V_ys = " << v << ", analytic (e0 = 1) " << analytic.V_ys
+                << ", expected " << target);
     CHECK(v == Approx(target).epsilon(rel_tol));
   }
 }

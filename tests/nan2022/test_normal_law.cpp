@@ -29,7 +29,9 @@ Nan2022Options ning_options() {
 // Tolerances: the law is evaluated in T; forces carry a relative round-off of a few eps of T
 // times the magnitudes that cancel (k alpha ~ f_ce).
 template <class T>
-double force_tol(double f_scale) { return (sizeof(T) == 4 ? 2e-5 : 1e-10) * f_scale; }
+double force_tol(double f_scale) {
+  return (sizeof(T) == 4 ? 2e-5 : 1e-10) * f_scale;
+}
 
 // Every pair of consecutive samples on which the contact stayed active changes the force by no
 // more than the steepest branch allows: no jump at any branch switch.
@@ -39,8 +41,8 @@ void check_continuous(const test::OverlapTrace& t, double k_max, double tol) {
     const double df = std::fabs(t.f[k + 1] - t.f[k]);
     const double bound = k_max * std::fabs(t.alpha[k + 1] - t.alpha[k]) * (1 + 1e-3) + tol;
     if (df > bound) {
-      INFO("jump at sample " << k << ": alpha " << t.alpha[k] << " -> " << t.alpha[k + 1] << ", f " << t.f[k]
-                             << " -> " << t.f[k + 1]);
+      INFO("jump at sample " << k << ": alpha " << t.alpha[k] << " -> " << t.alpha[k + 1] << ", f " << t.f[k] << " -> "
+                             << t.f[k + 1]);
       CHECK(df <= bound);
       return;
     }
@@ -71,7 +73,7 @@ TEMPLATE_LIST_TEST_CASE("nan2022 Fig. 2(a)-(b): elastic-adhesive loop without yi
   REQUIRE(rep.alpha_ce < 0.0);
   const double step = c.alpha_0 / 4000;
   std::vector<double> a{-0.5 * c.alpha_0};
-  test::ramp(a, 0.0, step);  // hits alpha = 0 exactly
+  test::ramp(a, 0.0, step);                            // hits alpha = 0 exactly
   test::ramp(a, 0.5 * (c.alpha_0 + c.alpha_y), step);  // below yield
   const std::size_t peak = a.size() - 1;
   test::ramp(a, rep.alpha_je - 0.5 * std::fabs(rep.alpha_je), step);
@@ -124,7 +126,7 @@ TEMPLATE_LIST_TEST_CASE("nan2022 Fig. 2(c): yield, unloading with k_e(alpha_max)
   const auto u = nan2022_unloading(c, a_max, pc.unloading_law, pc.pull_off_law);
   REQUIRE(u.alpha_jp < 0.0);  // this loop detaches at negative overlap
   REQUIRE(u.k_e > c.k_el);
-  REQUIRE(u.f_cp > c.f_ce);   // Nan Sec. 3.4: plastic flattening raises the pull-off force
+  REQUIRE(u.f_cp > c.f_ce);  // Nan Sec. 3.4: plastic flattening raises the pull-off force
   const double step = c.alpha_0 / 4000;
   std::vector<double> a{-0.1 * c.alpha_0};
   test::ramp(a, a_max, step);
@@ -212,7 +214,10 @@ TEMPLATE_LIST_TEST_CASE("nan2022 Fig. 2(d): detachment at alpha_jp > 0, re-conta
   CHECK(t.alpha[kd - 1] == Approx(u.alpha_jp).margin(step + 1e-6 * u.alpha_jp));
   const std::size_t kr = next_switch(t, bottom, 1);
   REQUIRE(kr < peak3);
-  for (std::size_t k = kd; k < kr; ++k) { CHECK(t.f[k] == 0); CHECK(t.active[k] == 0); }
+  for (std::size_t k = kd; k < kr; ++k) {
+    CHECK(t.f[k] == 0);
+    CHECK(t.active[k] == 0);
+  }
   CHECK(t.alpha[kr] == Approx(u.alpha_c0).margin(step + 1e-6 * u.alpha_c0));
   CHECK(t.alpha[kr - 1] < u.alpha_c0 + 1e-6 * u.alpha_c0);
   CHECK(t.f[kr] == Approx(-8.0 / 9.0 * u.f_cp).margin(u.k_e * step + tol));
@@ -310,8 +315,7 @@ TEMPLATE_LIST_TEST_CASE("nan2022 damping and tangential stiffness follow the bra
   const auto t = test::drive_overlap(model, a, kR, 1);
   CHECK(t.damping[before] == Approx(2 * gamma).epsilon(1e-5));
   CHECK(t.damping.back() == Approx(2 * gamma * 0.1).epsilon(1e-5));
-  for (std::size_t k = 0; k < t.size(); ++k)
-    CHECK(t.k_t[k] == Approx(pc.kt_over_kn * t.k_n[k]).epsilon(1e-5));
+  for (std::size_t k = 0; k < t.size(); ++k) CHECK(t.k_t[k] == Approx(pc.kt_over_kn * t.k_n[k]).epsilon(1e-5));
   CHECK(pc.kt_over_kn == Approx(4 * (1.2e9 / 2.6 / 1.7) / (1.2e9 / 0.91)).epsilon(1e-12));  // 4 G*/E*, rigid wall
 }
 
@@ -382,7 +386,8 @@ TEMPLATE_LIST_TEST_CASE("nan2022 reduced cases: Gamma = 0 and no yield give fini
       CHECK(t.history0[k] == 0);
       if (t.active[k] && t.alpha[k] > 0) CHECK(t.k_n[k] == Approx(c.k_el).epsilon(1e-5));
     }
-    const std::size_t top = static_cast<std::size_t>(std::max_element(t.alpha.begin(), t.alpha.end()) - t.alpha.begin());
+    const std::size_t top =
+        static_cast<std::size_t>(std::max_element(t.alpha.begin(), t.alpha.end()) - t.alpha.begin());
     CHECK(t.f[top] == Approx(c.k_el * (1000 * c.alpha_0 - c.alpha_0)).epsilon(1e-5));
   }
   SECTION("effects compiled out: no history, f = k_el alpha for alpha > 0") {

@@ -15,12 +15,16 @@ Nan2022Options table3_options(Nan2022UnloadingLaw law, double k_e0, double alpha
   Nan2022Options o;
   o.yield_pressure_from = Nan2022YieldPressureFrom::given_pressure;
   o.k_el_from = Nan2022ElasticStiffnessFrom::unloading_line;
-  o.k_e0 = k_e0; o.alpha_max0 = alpha_max0; o.reference_radius = R;
+  o.k_e0 = k_e0;
+  o.alpha_max0 = alpha_max0;
+  o.reference_radius = R;
   o.unloading_law = law;
   o.k_p = k_p;
   return o;
 }
-struct Table3Row { double k_el, alpha_y, alpha_0, el_over_cl, k_hertz; };
+struct Table3Row {
+  double k_el, alpha_y, alpha_0, el_over_cl, k_hertz;
+};
 void check_table3(const Material& particle, double R, double k_e0, double alpha_max0, double k_p,
                   Nan2022UnloadingLaw law, const Table3Row& paper) {
   const auto pc = nan2022_pair_constants(particle, test::rigid_wall(), table3_options(law, k_e0, alpha_max0, R, k_p));
@@ -94,31 +98,45 @@ TEST_CASE("nan2022 Nan (80): adhesion-induced yield at p_y/E* = 0.90 (Gamma/(E* 
   // f_y (Nan (28)) and f_0 (Nan (4)).
   const double E = 1.3e9, R = 2.45e-6, G = 0.24;
   Nan2022PairConstants<double> p{};
-  p.E_star = E; p.surface_energy = G; p.yields = 1; p.kel_fixed = 0; p.kp_value = 1;
+  p.E_star = E;
+  p.surface_energy = G;
+  p.yields = 1;
+  p.kel_fixed = 0;
+  p.kp_value = 1;
   auto excess = [&](double py) {
-    p.yield_pressure = py; p.kel_value = M_PI * py;
+    p.yield_pressure = py;
+    p.kel_value = M_PI * py;
     const auto c = nan2022_contact_constants<double>(p, R);
     return c.f_y - c.f_0;
   };
   double lo = 1e5, hi = 1e9;
   REQUIRE(excess(lo) < 0);
   REQUIRE(excess(hi) > 0);
-  for (int it = 0; it < 200; ++it) { const double m = std::sqrt(lo * hi); (excess(m) < 0 ? lo : hi) = m; }
+  for (int it = 0; it < 200; ++it) {
+    const double m = std::sqrt(lo * hi);
+    (excess(m) < 0 ? lo : hi) = m;
+  }
   const double coef = lo / E / std::cbrt(G / (E * R));
   CHECK(coef == Approx(nan2022_adhesion_yield_coefficient()).epsilon(1e-9));
   // and the report agrees: just below it, adhesion-induced yield; just above, not
-  p.yield_pressure = 0.99 * lo; p.kel_value = M_PI * p.yield_pressure;
+  p.yield_pressure = 0.99 * lo;
+  p.kel_value = M_PI * p.yield_pressure;
   CHECK(nan2022_pair_report(p, R).adhesion_induced_yield);
   CHECK(nan2022_pair_report(p, R).critical_yield_pressure == Approx(lo).epsilon(1e-9));
-  p.yield_pressure = 1.01 * lo; p.kel_value = M_PI * p.yield_pressure;
+  p.yield_pressure = 1.01 * lo;
+  p.kel_value = M_PI * p.yield_pressure;
   CHECK_FALSE(nan2022_pair_report(p, R).adhesion_induced_yield);
   // at the threshold CY = coefficient^3 = 0.74 (CY < 1 is the paper's rounded criterion)
-  CHECK(nan2022_cohesion_yield_number(lo, R, E, G) == Approx(std::pow(nan2022_adhesion_yield_coefficient(), 3)).epsilon(1e-9));
+  CHECK(nan2022_cohesion_yield_number(lo, R, E, G) ==
+        Approx(std::pow(nan2022_adhesion_yield_coefficient(), 3)).epsilon(1e-9));
 }
 
 TEST_CASE("nan2022 CY (Nan (81)) for the FT4 particles, Tables 7-8: 4.2 and 0.5", "[nan2022][params][paper]") {
   Material m;
-  m.name = "ft4 particle"; m.youngs_modulus = 63e6; m.poisson_ratio = 0.2; m.density = 2500;
+  m.name = "ft4 particle";
+  m.youngs_modulus = 63e6;
+  m.poisson_ratio = 0.2;
+  m.density = 2500;
   m.yield_stress = 0.5e6;
   Nan2022Options o;
   o.yield_pressure_from = Nan2022YieldPressureFrom::given_pressure;
@@ -156,7 +174,9 @@ TEST_CASE("nan2022 yield pressure from yield stress, Nan (32)-(34) and Fig. 5", 
   // the strain-rate option flows into p_y
   Material m = test::ning_particle();
   Nan2022Options o;
-  o.strain_rate_Y = 0.1; o.strain_rate_V_i = std::exp(1.0); o.strain_rate_V_0 = 1.0;
+  o.strain_rate_Y = 0.1;
+  o.strain_rate_V_i = std::exp(1.0);
+  o.strain_rate_V_0 = 1.0;
   CHECK(nan2022_material_yield_pressure(m, o) ==
         Approx(1.1 * nan2022_yield_pressure_from_stress(35.3e6, 0.3, Nan2022YieldPressureFrom::jackson_green)));
 }
@@ -165,7 +185,8 @@ TEST_CASE("nan2022 time step, Nan (68)-(72)", "[nan2022][params]") {
   const double R = 1e-3, rho = 2500, E = 1e8;
   for (double nu : {0.2, 0.3, 0.4}) {
     const double G = E / (2 * (1 + nu));
-    const double ratio = nan2022_critical_time_step_hertz_bound(R, rho, E, 0.1 * R) / nan2022_rayleigh_time_step(R, rho, G, nu);
+    const double ratio =
+        nan2022_critical_time_step_hertz_bound(R, rho, E, 0.1 * R) / nan2022_rayleigh_time_step(R, rho, G, nu);
     CHECK(ratio == Approx(nan2022_critical_to_rayleigh_ratio(nu, 0.1)).epsilon(1e-12));
     CHECK(ratio >= 0.9);  // Sec. 3.5: 0.9-1.0 at alpha_max/R = 0.1
     CHECK(ratio <= 1.0);
@@ -177,8 +198,7 @@ TEST_CASE("nan2022 time step, Nan (68)-(72)", "[nan2022][params]") {
   CHECK_THROWS_AS(nan2022_critical_time_step(m, 0.0), ParameterError);
 }
 
-TEST_CASE("nan2022 pull-off laws reduce to f_ce before yield and satisfy their equations after",
-          "[nan2022][params]") {
+TEST_CASE("nan2022 pull-off laws reduce to f_ce before yield and satisfy their equations after", "[nan2022][params]") {
   Nan2022Options o;
   o.yield_pressure_from = Nan2022YieldPressureFrom::given_pressure;
   o.k_p_ratio = 0.8;
@@ -205,10 +225,12 @@ TEST_CASE("nan2022 pull-off laws reduce to f_ce before yield and satisfy their e
   CHECK(u59.f_cp > c.f_ce);
   CHECK(u59.k_e == Approx(c.k_el * std::sqrt(10 * c.alpha_y / c.alpha_y)).epsilon(1e-12));  // Nan (46)
   // Nan (16) = Nan (11)
-  const double a11 = (1 - c.k_p / u59.k_e) * (am - c.alpha_y) + (1 - c.k_el / u59.k_e) * (c.alpha_y - c.alpha_0) + c.alpha_0;
+  const double a11 =
+      (1 - c.k_p / u59.k_e) * (am - c.alpha_y) + (1 - c.k_el / u59.k_e) * (c.alpha_y - c.alpha_0) + c.alpha_0;
   CHECK(u59.alpha_p == Approx(a11).epsilon(1e-12));
   const auto u64 = nan2022_unloading(c, am, 0, 1);
-  CHECK(u64.f_cp == Approx(c.f_ce * (c.f_y + u64.k_e * (am - c.alpha_y)) / (c.f_y + c.k_p * (am - c.alpha_y))).epsilon(1e-12));
+  CHECK(u64.f_cp ==
+        Approx(c.f_ce * (c.f_y + u64.k_e * (am - c.alpha_y)) / (c.f_y + c.k_p * (am - c.alpha_y))).epsilon(1e-12));
   const auto u67 = nan2022_unloading(c, am, 0, 2);
   CHECK(u67.f_cp == Approx(c.f_ce * std::pow(u67.k_e / c.k_el, 1.5)).epsilon(1e-12));
   const auto u48 = nan2022_unloading(c, am, 1, 0);
@@ -219,8 +241,8 @@ TEST_CASE("nan2022 validation names the parameter, its value and the valid range
   const Material p = test::ning_particle(), w = test::rigid_wall();
   Nan2022Options o;
   o.k_p_ratio = 1.5;
-  CHECK_THROWS_WITH(nan2022_pair_constants(p, w, o), Catch::Contains("k_p_ratio") && Catch::Contains("1.5") &&
-                                                         Catch::Contains("(0, 1]"));
+  CHECK_THROWS_WITH(nan2022_pair_constants(p, w, o),
+                    Catch::Contains("k_p_ratio") && Catch::Contains("1.5") && Catch::Contains("(0, 1]"));
   o = Nan2022Options{};
   o.beta_yielded = -0.1;
   CHECK_THROWS_WITH(nan2022_pair_constants(p, w, o), Catch::Contains("beta_yielded"));

@@ -72,7 +72,8 @@ TEST_CASE("nan2022 sticking velocities: ordinary yield, no yield, no adhesion", 
     CHECK(v.V_ys == v.V_s);
     // V_y0 closed form, Nan (74), with k_el by (52)
     const double E = table5_pair(100e6).E_star;
-    CHECK(v.V_y0 == Approx(std::pow(M_PI / (2 * E), 2) * std::sqrt(2 / (5 * 1350.0)) * std::pow(100e6, 2.5)).epsilon(1e-9));
+    CHECK(v.V_y0 ==
+          Approx(std::pow(M_PI / (2 * E), 2) * std::sqrt(2 / (5 * 1350.0)) * std::pow(100e6, 2.5)).epsilon(1e-9));
     CHECK(v.V_y0 > v.V_y);
   }
   SECTION("moderate p_y: yields before sticking without adhesion-induced yield") {
@@ -101,7 +102,8 @@ TEST_CASE("nan2022 sticking velocities: ordinary yield, no yield, no adhesion", 
   SECTION("no adhesion: nothing sticks") {
     auto p = test::table5_particle(30e6);
     auto w = test::table5_wall();
-    p.surface_energy = 0; w.surface_energy = 0;
+    p.surface_energy = 0;
+    w.surface_energy = 0;
     Nan2022Options o;
     o.yield_pressure_from = Nan2022YieldPressureFrom::given_pressure;
     const auto v = nan2022_sticking_velocities(nan2022_pair_constants(p, w, o), R, mass(R));

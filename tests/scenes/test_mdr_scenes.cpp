@@ -100,10 +100,10 @@ Scene half_speed(Scene s) {
 }
 
 struct TwoFlatResult {
-  double peak_force = 0;     // F/(E R_o^2) at the largest displacement
-  double peak_disp = 0;      // delta_o/R_o there
-  double residual = 0;       // delta_o/R_o of the last sample with a force, after the peak
-  double max_top_bottom = 0; // max |F_top - F_bottom| / max F
+  double peak_force = 0;      // F/(E R_o^2) at the largest displacement
+  double peak_disp = 0;       // delta_o/R_o there
+  double residual = 0;        // delta_o/R_o of the last sample with a force, after the peak
+  double max_top_bottom = 0;  // max |F_top - F_bottom| / max F
 };
 TwoFlatResult two_flat_result(const fs::path& dir) {
   const auto c = read_csv_columns(dir / "timeseries.csv");
@@ -117,7 +117,8 @@ TwoFlatResult two_flat_result(const fs::path& dir) {
   for (std::size_t i = k; i < f.size(); ++i)
     if (f[i] != 0.0) r.residual = d[i] / kR;
   const double fmax = *std::max_element(f.begin(), f.end());
-  for (std::size_t i = 0; i < f.size(); ++i) r.max_top_bottom = std::max(r.max_top_bottom, std::fabs(f[i] - fb[i]) / fmax);
+  for (std::size_t i = 0; i < f.size(); ++i)
+    r.max_top_bottom = std::max(r.max_top_bottom, std::fabs(f[i] - fb[i]) / fmax);
   return r;
 }
 
@@ -184,7 +185,7 @@ TEST_CASE("MDR two-flat scenes: peak force and residual displacement per E/Y, qu
 
 TEST_CASE("MDR adhesive scenes: JKR pull-off in the elastic regime, larger after plastic loading", "[scenes][mdr]") {
   const double gamma = kE / (1 - 0.09) * kR / 2.2e4;  // E_eff R_o / Delta gamma = 2.2e4
-  const double f_jkr = 1.5 * kPi * gamma * kR;          // JKR pull-off, sphere on a rigid flat
+  const double f_jkr = 1.5 * kPi * gamma * kR;        // JKR pull-off, sphere on a rigid flat
   double pull_off[3] = {0, 0, 0};
   const char* stems[] = {"mdr_adhesive_elastic", "mdr_adhesive_plastic_0.1", "mdr_adhesive_plastic_0.4"};
   for (int k = 0; k < 3; ++k) {

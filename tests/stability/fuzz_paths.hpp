@@ -32,12 +32,18 @@ struct FuzzCounts {
   // mdr_pair_balance.hpp is passive by construction)
   long plastic_pair_checked = 0, plastic_pair_energy_created = 0;
   double worst_plastic_pair = -1;  // largest (returned - put in) / put in over those pairs
-  double worst_energy = -1;  // largest (returned - put in) / put in over the energy paths
+  double worst_energy = -1;        // largest (returned - put in) / put in over the energy paths
   std::string first_failure;
   FuzzCounts& operator+=(const FuzzCounts& o) {
-    paths += o.paths; contacts += o.contacts; rejected += o.rejected; nan += o.nan; inf += o.inf;
-    energy_checked += o.energy_checked; energy_created += o.energy_created;
-    plastic_pair_checked += o.plastic_pair_checked; plastic_pair_energy_created += o.plastic_pair_energy_created;
+    paths += o.paths;
+    contacts += o.contacts;
+    rejected += o.rejected;
+    nan += o.nan;
+    inf += o.inf;
+    energy_checked += o.energy_checked;
+    energy_created += o.energy_created;
+    plastic_pair_checked += o.plastic_pair_checked;
+    plastic_pair_energy_created += o.plastic_pair_energy_created;
     worst_energy = std::max(worst_energy, o.worst_energy);
     worst_plastic_pair = std::max(worst_plastic_pair, o.worst_plastic_pair);
     if (first_failure.empty()) first_failure = o.first_failure;
@@ -63,8 +69,8 @@ inline Material fuzz_material(FuzzRng& r, double R, bool adhesive, bool may_not_
   m.density = r.log_u(300, 2e4);
   m.restitution = r.u();
   m.friction = r.u();
-  m.yield_stress = (may_not_yield && r.u() < 0.2) ? std::numeric_limits<double>::infinity()
-                                                  : m.youngs_modulus / r.log_u(1.5, 1e5);
+  m.yield_stress =
+      (may_not_yield && r.u() < 0.2) ? std::numeric_limits<double>::infinity() : m.youngs_modulus / r.log_u(1.5, 1e5);
   m.surface_energy = adhesive ? m.youngs_modulus * R * r.log_u(1e-10, 1.0) : 0.0;
   return m;
 }
@@ -109,9 +115,7 @@ FuzzCounts fuzz_paths(long n_paths, std::uint64_t seed, int group = 512, int ref
           (void)Make::make({m, stability_wall()});
           mats.push_back(m);
           break;
-        } catch (const ParameterError&) {
-          ++c.rejected;
-        }
+        } catch (const ParameterError&) { ++c.rejected; }
       }
     }
     mats.push_back(stability_wall());
@@ -161,11 +165,14 @@ FuzzCounts fuzz_paths(long n_paths, std::uint64_t seed, int group = 512, int ref
           gid(k) = k;
         }
         rho[i] = mats[ma].density;
-        mA[i] = ma; mB[i] = mb;
+        mA[i] = ma;
+        mB[i] = mb;
         plastic_pair[i] = std::isfinite(mats[ma].yield_stress) || std::isfinite(mats[mb].yield_stress);
         Eg[i] = std::min(mats[ma].youngs_modulus, mats[mb].youngs_modulus);
-        wf(i) = 3 * i; ws(i) = 0;
-        pf(i) = 3 * i + 1; ps(i) = 3 * i + 2;
+        wf(i) = 3 * i;
+        ws(i) = 0;
+        pf(i) = 3 * i + 1;
+        ps(i) = 3 * i + 2;
         const double Rmin = std::min(Ra[i], Rb[i]);
         if (energy[i]) {
           const int N = r.i(4, 25);
@@ -181,8 +188,13 @@ FuzzCounts fuzz_paths(long n_paths, std::uint64_t seed, int group = 512, int ref
           const int n = r.i(5, 60);
           double a = 0, b = 0;
           for (int k = 0; k < n; ++k) {
-            if (r.u() < 0.5) { a = Ra[i] * r.u(-0.3, 1.2); b = Rmin * r.u(-0.3, 1.2); }
-            else { a += Ra[i] * r.u(-0.05, 0.05); b += Rmin * r.u(-0.05, 0.05); }
+            if (r.u() < 0.5) {
+              a = Ra[i] * r.u(-0.3, 1.2);
+              b = Rmin * r.u(-0.3, 1.2);
+            } else {
+              a += Ra[i] * r.u(-0.05, 0.05);
+              b += Rmin * r.u(-0.05, 0.05);
+            }
             dw[i].push_back(a);
             dp[i].push_back(b);
           }
@@ -195,8 +207,10 @@ FuzzCounts fuzz_paths(long n_paths, std::uint64_t seed, int group = 512, int ref
       Kokkos::deep_copy(p.inertia, inertia);
       Kokkos::deep_copy(p.material, mat);
       Kokkos::deep_copy(p.gid, gid);
-      Kokkos::deep_copy(wc.first, wf); Kokkos::deep_copy(wc.second, ws);
-      Kokkos::deep_copy(pc.first, pf); Kokkos::deep_copy(pc.second, ps);
+      Kokkos::deep_copy(wc.first, wf);
+      Kokkos::deep_copy(wc.second, ws);
+      Kokkos::deep_copy(pc.first, pf);
+      Kokkos::deep_copy(pc.second, ps);
       auto wn = Kokkos::create_mirror_view(w.normal);
       Kokkos::deep_copy(wn, T(0));
       wn(0, 2) = T(1);
@@ -219,10 +233,14 @@ FuzzCounts fuzz_paths(long n_paths, std::uint64_t seed, int group = 512, int ref
         Kokkos::deep_copy(om, T(0));
       }
       for (int i = 0; i < G; ++i) {
-        const int k = std::min<int>(energy[i] ? s : s / refine, static_cast<int>(dw[i].size()) - 1);  // shorter paths hold
+        const int k =
+            std::min<int>(energy[i] ? s : s / refine, static_cast<int>(dw[i].size()) - 1);  // shorter paths hold
         const double y = 10.0 * i;  // apart: only listed contacts act
-        x(3 * i, 0) = T(-5.0); x(3 * i, 1) = T(y); x(3 * i, 2) = T(Ra[i] - dw[i][k]);
-        x(3 * i + 1, 1) = T(y); x(3 * i + 2, 1) = T(y);
+        x(3 * i, 0) = T(-5.0);
+        x(3 * i, 1) = T(y);
+        x(3 * i, 2) = T(Ra[i] - dw[i][k]);
+        x(3 * i + 1, 1) = T(y);
+        x(3 * i + 2, 1) = T(y);
         x(3 * i + 2, 0) = T(Ra[i] + Rb[i] - dp[i][k]);
         if (!energy[i] && draw)
           for (int q = 0; q < 3; ++q)
@@ -251,13 +269,19 @@ FuzzCounts fuzz_paths(long n_paths, std::uint64_t seed, int group = 512, int ref
       for (int i = 0; i < G; ++i) {
         const int k = std::min<int>(energy[i] ? s : s / refine, static_cast<int>(dw[i].size()) - 1);
         auto check = [&](double val) {
-          if (std::isnan(val)) bad[i] = bad[i] ? bad[i] : 1;
-          else if (std::isinf(val)) bad[i] = bad[i] ? bad[i] : 2;
+          if (std::isnan(val))
+            bad[i] = bad[i] ? bad[i] : 1;
+          else if (std::isinf(val))
+            bad[i] = bad[i] ? bad[i] : 2;
         };
-        check(fw(i)); check(fp(i));
+        check(fw(i));
+        check(fp(i));
         for (int q = 0; q < 3; ++q) {
           check(R(3 * i + q));
-          for (int d = 0; d < 3; ++d) { check(F(3 * i + q, d)); check(Tq(3 * i + q, d)); }
+          for (int d = 0; d < 3; ++d) {
+            check(F(3 * i + q, d));
+            check(Tq(3 * i + q, d));
+          }
         }
         if (energy[i] && s > 0 && s < static_cast<int>(dw[i].size())) {
           const double f[2] = {double(fw(i)), double(fp(i))};
@@ -268,7 +292,10 @@ FuzzCounts fuzz_paths(long n_paths, std::uint64_t seed, int group = 512, int ref
           }
         }
         if (energy[i] && s < static_cast<int>(dw[i].size())) Fp[i].push_back(fp(i));
-        if (energy[i]) { Fprev[2 * i] = fw(i); Fprev[2 * i + 1] = fp(i); }
+        if (energy[i]) {
+          Fprev[2 * i] = fw(i);
+          Fprev[2 * i + 1] = fp(i);
+        }
       }
     }
     auto Rstart = to_host(p.radius0);
@@ -295,8 +322,8 @@ FuzzCounts fuzz_paths(long n_paths, std::uint64_t seed, int group = 512, int ref
           if (out > in * (1 + tol_energy)) {
             ++c.plastic_pair_energy_created;
             if (std::getenv("EPAC_FUZZ_DUMP")) {
-              std::printf("PAIR rel %.4g Ra %.4g Rb %.4g EA %.4g nuA %.3g YA %.4g EB %.4g nuB %.3g YB %.4g\n", rel, Ra[i],
-                          Rb[i], mats[mA[i]].youngs_modulus, mats[mA[i]].poisson_ratio, mats[mA[i]].yield_stress,
+              std::printf("PAIR rel %.4g Ra %.4g Rb %.4g EA %.4g nuA %.3g YA %.4g EB %.4g nuB %.3g YB %.4g\n", rel,
+                          Ra[i], Rb[i], mats[mA[i]].youngs_modulus, mats[mA[i]].poisson_ratio, mats[mA[i]].yield_stress,
                           mats[mB[i]].youngs_modulus, mats[mB[i]].poisson_ratio, mats[mB[i]].yield_stress);
               for (std::size_t q = 0; q < Fp[i].size(); ++q) std::printf("  %.6g %.6g\n", dp[i][q], Fp[i][q]);
             }

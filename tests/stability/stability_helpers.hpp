@@ -18,35 +18,50 @@ constexpr unsigned kAllButGrowth = kAdhesion | kPlasticity | kFriction | kDampin
 // gamma: Delta gamma / (E R)
 inline Material stability_material(double E, double Y, double gamma, double R) {
   Material m;
-  m.name = "m"; m.youngs_modulus = E; m.poisson_ratio = 0.3; m.density = 2500;
-  m.restitution = 0.5; m.friction = 0.5; m.surface_energy = gamma * E * R;
+  m.name = "m";
+  m.youngs_modulus = E;
+  m.poisson_ratio = 0.3;
+  m.density = 2500;
+  m.restitution = 0.5;
+  m.friction = 0.5;
+  m.surface_energy = gamma * E * R;
   m.yield_stress = Y;
   return m;
 }
-inline Material stability_wall() { Material m; m.name = "wall"; m.rigid = true; return m; }
+inline Material stability_wall() {
+  Material m;
+  m.name = "wall";
+  m.rigid = true;
+  return m;
+}
 
 // Model makers: make(materials) builds the law with its stability-test effects.
-template <class T> struct MakeHM {
+template <class T>
+struct MakeHM {
   using M = HertzMindlin<T, Effects<kFriction | kDamping>>;
   static constexpr const char* name = "hertz_mindlin";
   static M make(const std::vector<Material>& m) { return M::create(m); }
 };
-template <class T> struct MakeJkr {
+template <class T>
+struct MakeJkr {
   using M = Jkr<T, Effects<kAllButGrowth>>;
   static constexpr const char* name = "hertz_jkr";
   static M make(const std::vector<Material>& m) { return M::create(m); }
 };
-template <class T> struct MakeNan {
+template <class T>
+struct MakeNan {
   using M = Nan2022<T, Effects<kAllButGrowth>>;
   static constexpr const char* name = "nan2022";
   static M make(const std::vector<Material>& m) { return M::create(m); }
 };
-template <class T> struct MakeMdr {
+template <class T>
+struct MakeMdr {
   using M = Mdr<T, Effects<kAllButGrowth>>;
   static constexpr const char* name = "mdr";
   static M make(const std::vector<Material>& m) { return M::create(m); }
 };
-template <class T> struct MakeMdrGrowth {
+template <class T>
+struct MakeMdrGrowth {
   using M = Mdr<T, Effects<kAllEffects>>;
   static constexpr const char* name = "mdr+growth";
   static M make(const std::vector<Material>& m) { return M::create(m); }

@@ -32,24 +32,46 @@ struct Probe {
   ContactList<D> wc{1, "probe_wc"}, pc{1, "probe_pc"};
   ContactHistory<T, D> wh, ph;
   double R;
-  Probe(const Model& m, double radius, double mass) : model(m), wh(1, Model::history_size), ph(1, Model::history_size), R(radius) {
-    Kokkos::deep_copy(p.radius, T(R)); Kokkos::deep_copy(p.radius0, T(R));
-    Kokkos::deep_copy(p.mass, T(mass)); Kokkos::deep_copy(p.inertia, T(0.4 * mass * R * R));
+  Probe(const Model& m, double radius, double mass)
+      : model(m), wh(1, Model::history_size), ph(1, Model::history_size), R(radius) {
+    Kokkos::deep_copy(p.radius, T(R));
+    Kokkos::deep_copy(p.radius0, T(R));
+    Kokkos::deep_copy(p.mass, T(mass));
+    Kokkos::deep_copy(p.inertia, T(0.4 * mass * R * R));
     Kokkos::deep_copy(p.material, 0);
-    auto g = Kokkos::create_mirror_view(p.gid); g(0) = 0; g(1) = 1; g(2) = 2; Kokkos::deep_copy(p.gid, g);
-    auto n = Kokkos::create_mirror_view(w.normal); Kokkos::deep_copy(n, T(0)); n(0, 2) = T(1); Kokkos::deep_copy(w.normal, n);
+    auto g = Kokkos::create_mirror_view(p.gid);
+    g(0) = 0;
+    g(1) = 1;
+    g(2) = 2;
+    Kokkos::deep_copy(p.gid, g);
+    auto n = Kokkos::create_mirror_view(w.normal);
+    Kokkos::deep_copy(n, T(0));
+    n(0, 2) = T(1);
+    Kokkos::deep_copy(w.normal, n);
     Kokkos::deep_copy(w.material, 1);
-    Kokkos::deep_copy(wc.first, 0); Kokkos::deep_copy(wc.second, 0);
-    auto f = Kokkos::create_mirror_view(pc.first); f(0) = 1; Kokkos::deep_copy(pc.first, f);
-    auto s = Kokkos::create_mirror_view(pc.second); s(0) = 2; Kokkos::deep_copy(pc.second, s);
+    Kokkos::deep_copy(wc.first, 0);
+    Kokkos::deep_copy(wc.second, 0);
+    auto f = Kokkos::create_mirror_view(pc.first);
+    f(0) = 1;
+    Kokkos::deep_copy(pc.first, f);
+    auto s = Kokkos::create_mirror_view(pc.second);
+    s(0) = 2;
+    Kokkos::deep_copy(pc.second, s);
   }
   // wall force on sphere 0 and pair force on sphere 1 (pair overlap 2 delta: delta per sphere)
   std::pair<double, double> at(double delta, double vz, double dt) {
     auto x = Kokkos::create_mirror_view(p.x), v = Kokkos::create_mirror_view(p.v);
-    Kokkos::deep_copy(x, T(0)); Kokkos::deep_copy(v, T(0));
-    x(0, 2) = T(R - delta); v(0, 2) = T(vz); v(0, 0) = T(0.3 * vz);  // sliding as well
-    x(1, 2) = T(0); x(2, 2) = T(2 * R - 2 * delta); v(1, 2) = T(-vz); v(1, 1) = T(0.2 * vz);
-    Kokkos::deep_copy(p.x, x); Kokkos::deep_copy(p.v, v);
+    Kokkos::deep_copy(x, T(0));
+    Kokkos::deep_copy(v, T(0));
+    x(0, 2) = T(R - delta);
+    v(0, 2) = T(vz);
+    v(0, 0) = T(0.3 * vz);  // sliding as well
+    x(1, 2) = T(0);
+    x(2, 2) = T(2 * R - 2 * delta);
+    v(1, 2) = T(-vz);
+    v(1, 1) = T(0.2 * vz);
+    Kokkos::deep_copy(p.x, x);
+    Kokkos::deep_copy(p.v, v);
     zero_forces(p);
     compute_wall_forces(model, p, w, wc, wh, T(dt));
     compute_pair_forces(model, p, pc, ph, T(dt));
@@ -69,8 +91,8 @@ void sweep_finite() {
           const Material m = mat(E, E / EY, gamma, R);
           Probe<typename Make<T>::M> probe(Make<T>::make({m, rigid()}), R, 2500 * 4.19 * R * R * R);
           const double vmax = 10.0;
-          std::vector<double> path;  // host
-          for (double d = 1e-9; d < 0.9; d *= 1.6) path.push_back(d * R);   // load to 0.9 R
+          std::vector<double> path;                                          // host
+          for (double d = 1e-9; d < 0.9; d *= 1.6) path.push_back(d * R);    // load to 0.9 R
           for (double d = 0.9; d > -0.05; d -= 0.05) path.push_back(d * R);  // unload past contact
           for (double d = -1e-3; d < 0.5; d += 0.05) path.push_back(d * R);  // reload
           double prev = 0;
@@ -80,7 +102,8 @@ void sweep_finite() {
             ++checked;
             if (!std::isfinite(f.first) || !std::isfinite(f.second)) {
               ++bad;
-              UNSCOPED_INFO("non-finite at R=" << R << " E=" << E << " E/Y=" << EY << " gamma=" << gamma << " delta/R=" << delta / R);
+              UNSCOPED_INFO("non-finite at R=" << R << " E=" << E << " E/Y=" << EY << " gamma=" << gamma
+                                               << " delta/R=" << delta / R);
             }
             prev = delta;
           }
@@ -101,7 +124,9 @@ void cycle_creates_no_energy() {
       const Material m = mat(E, E / EY, gamma, R);
       Probe<typename Make<T>::M> probe(Make<T>::make({m, rigid()}), R, 2500 * 4.19 * R * R * R);
       std::vector<double> path;  // host, in units of R
-      auto ramp = [&](double a, double b, int n) { for (int k = 1; k <= n; ++k) path.push_back(a + (b - a) * k / n); };
+      auto ramp = [&](double a, double b, int n) {
+        for (int k = 1; k <= n; ++k) path.push_back(a + (b - a) * k / n);
+      };
       path.push_back(-0.01);
       ramp(-0.01, 0.05, 3000);
       ramp(0.05, 0.02, 3000);
@@ -116,9 +141,11 @@ void cycle_creates_no_energy() {
         W_wall += 0.5 * (f.first + f_prev.first) * (d - d_prev);
         W_pair += 0.5 * (f.second + f_prev.second) * (2 * (d - d_prev));
         scale = std::max(scale, std::abs(f.first) * 0.1 * R);
-        f_prev = f; d_prev = d;
+        f_prev = f;
+        d_prev = d;
       }
-      INFO("E/Y = " << EY << ", gamma = " << gamma << ", W_wall = " << W_wall << ", W_pair = " << W_pair << ", scale = " << scale);
+      INFO("E/Y = " << EY << ", gamma = " << gamma << ", W_wall = " << W_wall << ", W_pair = " << W_pair
+                    << ", scale = " << scale);
       REQUIRE(scale > 0);
       // Trapezoid error on 3000-point ramps plus float round-off: 1e-3 of F_max * 0.1 R.
       const double tol = (std::is_same<T, float>::value ? 1e-2 : 1e-3) * scale;
@@ -135,7 +162,8 @@ TEMPLATE_TEST_CASE("every law stays finite over the hard-case sweep", "[stabilit
   SECTION("mdr") { sweep_finite<MakeMdr, TestType>(); }
 }
 
-TEMPLATE_TEST_CASE("no law returns more work than was put in over closed cycles", "[stability][energy]", double, float) {
+TEMPLATE_TEST_CASE("no law returns more work than was put in over closed cycles", "[stability][energy]", double,
+                   float) {
   SECTION("hertz_mindlin") { cycle_creates_no_energy<MakeHM, TestType>(); }
   SECTION("hertz_jkr") { cycle_creates_no_energy<MakeJkr, TestType>(); }
   SECTION("nan2022") { cycle_creates_no_energy<MakeNan, TestType>(); }

@@ -17,9 +17,7 @@ template <class Make>
 std::string rejection(const Material& m) {
   try {
     (void)Make::make({m, stability_wall()});
-  } catch (const ParameterError& e) {
-    return e.what();
-  }
+  } catch (const ParameterError& e) { return e.what(); }
   return "";
 }
 
@@ -42,8 +40,12 @@ TEST_CASE("create: float models reject inputs whose derived constants leave floa
   CHECK(rejection<MakeNan<float>>(base()).empty());
   CHECK(rejection<MakeMdr<float>>(base()).empty());
 
-  Material huge_E = base(); huge_E.youngs_modulus = 1e39; huge_E.yield_stress = 1e37;
-  Material tiny_E = base(); tiny_E.youngs_modulus = 1e-39; tiny_E.yield_stress = 1e-41;
+  Material huge_E = base();
+  huge_E.youngs_modulus = 1e39;
+  huge_E.yield_stress = 1e37;
+  Material tiny_E = base();
+  tiny_E.youngs_modulus = 1e-39;
+  tiny_E.yield_stress = 1e-41;
   SECTION("moduli") {
     float_rejects<MakeHM>(huge_E, "E_star");
     float_rejects<MakeHM>(tiny_E, "E_star");
@@ -55,8 +57,10 @@ TEST_CASE("create: float models reject inputs whose derived constants leave floa
     float_rejects<MakeMdr>(tiny_E, "E_eff");
   }
   SECTION("surface energies") {
-    Material big = base(); big.surface_energy = 1e39;
-    Material small = base(); small.surface_energy = 1e-40;  // nonzero, but a float denormal
+    Material big = base();
+    big.surface_energy = 1e39;
+    Material small = base();
+    small.surface_energy = 1e-40;  // nonzero, but a float denormal
     float_rejects<MakeJkr>(big, "surface_energy");
     float_rejects<MakeJkr>(small, "surface_energy");
     float_rejects<MakeNan>(big, "surface_energy");
@@ -65,15 +69,21 @@ TEST_CASE("create: float models reject inputs whose derived constants leave floa
     float_rejects<MakeMdr>(small, "surface_energy");
   }
   SECTION("yield stresses") {
-    Material soft = base(); soft.yield_stress = 1e-39;
+    Material soft = base();
+    soft.yield_stress = 1e-39;
     float_rejects<MakeNan>(soft, "yield_pressure");
     float_rejects<MakeMdr>(soft, "yield_stress");
   }
   SECTION("double models reject what overflows double") {
-    Material m = base(); m.youngs_modulus = 1e300; m.poisson_ratio = 0.49; m.yield_stress = 1e299;
+    Material m = base();
+    m.youngs_modulus = 1e300;
+    m.poisson_ratio = 0.49;
+    m.yield_stress = 1e299;
     // kappa = E / (3 (1 - 2 nu)) = 1.7e301 is fine; 4 / E_eff underflows nothing; so MDR accepts,
     // while a modulus of 1e-310 (a double denormal) is rejected
-    Material d = base(); d.youngs_modulus = 1e-310; d.yield_stress = 1e-312;
+    Material d = base();
+    d.youngs_modulus = 1e-310;
+    d.yield_stress = 1e-312;
     const std::string msg = rejection<MakeMdr<double>>(d);
     INFO(msg);
     CHECK(msg.find("double") != std::string::npos);

@@ -22,10 +22,9 @@ FuzzCounts run_law(long n, std::uint64_t seed, int refine = 1) {
 template <template <class> class Make, class T>
 void check_law(long n, std::uint64_t seed) {
   const FuzzCounts c = run_law<Make, T>(n, seed);
-  INFO(Make<T>::name << (sizeof(T) == 4 ? " float" : " double") << ": paths " << c.paths << ", rejected "
-                     << c.rejected << ", NaN " << c.nan << ", Inf " << c.inf << ", energy created "
-                     << c.energy_created << " of " << c.energy_checked << " (worst " << c.worst_energy << "); "
-                     << c.first_failure);
+  INFO(Make<T>::name << (sizeof(T) == 4 ? " float" : " double") << ": paths " << c.paths << ", rejected " << c.rejected
+                     << ", NaN " << c.nan << ", Inf " << c.inf << ", energy created " << c.energy_created << " of "
+                     << c.energy_checked << " (worst " << c.worst_energy << "); " << c.first_failure);
   CHECK(c.paths == n);
   CHECK(c.nan == 0);
   CHECK(c.inf == 0);
@@ -40,12 +39,12 @@ void report_law(long n, std::uint64_t seed) {
   if (laws && std::string(Make<T>::name).find(laws) == std::string::npos) return;
   const char* ref = std::getenv("EPAC_FUZZ_REFINE");
   const FuzzCounts c = run_law<Make, T>(n, seed, ref ? std::max(1, std::atoi(ref)) : 1);
-  std::printf("%-14s %-6s paths %8ld contacts %10ld rejected %6ld NaN %ld Inf %ld energy created %ld of %ld "
-              "(worst (out-in)/in %.3g); MDR plastic pairs: energy created %ld of %ld (worst %.3g)%s%s\n",
-              Make<T>::name, sizeof(T) == 4 ? "float" : "double", c.paths, c.contacts, c.rejected, c.nan, c.inf,
-              c.energy_created, c.energy_checked, c.worst_energy, c.plastic_pair_energy_created,
-              c.plastic_pair_checked, c.worst_plastic_pair, c.first_failure.empty() ? "" : "; first: ",
-              c.first_failure.c_str());
+  std::printf(
+      "%-14s %-6s paths %8ld contacts %10ld rejected %6ld NaN %ld Inf %ld energy created %ld of %ld "
+      "(worst (out-in)/in %.3g); MDR plastic pairs: energy created %ld of %ld (worst %.3g)%s%s\n",
+      Make<T>::name, sizeof(T) == 4 ? "float" : "double", c.paths, c.contacts, c.rejected, c.nan, c.inf,
+      c.energy_created, c.energy_checked, c.worst_energy, c.plastic_pair_energy_created, c.plastic_pair_checked,
+      c.worst_plastic_pair, c.first_failure.empty() ? "" : "; first: ", c.first_failure.c_str());
   std::fflush(stdout);
   CHECK(c.nan == 0);
   CHECK(c.inf == 0);

@@ -19,7 +19,9 @@ namespace {
 const std::string kScenes = EPAC_SCENES_DIR;  // drivers/scenes
 const std::string kTmp = EPAC_STICKING_TMP;
 
-ImpactScene scene_R245() { return make_impact_scene(driver::parse_scene_file(kScenes + "/nan2022_sticking_R2.45.toml")); }
+ImpactScene scene_R245() {
+  return make_impact_scene(driver::parse_scene_file(kScenes + "/nan2022_sticking_R2.45.toml"));
+}
 
 std::string csv(const std::string& name, const std::string& rows) {
   const std::string path = kTmp + "/" + name;
@@ -43,7 +45,8 @@ TEST_CASE("sticking velocity: timeseries classification", "[sticking_velocity]")
     CHECK(r.min_force == -3e-6);
   }
   SECTION("stick: compressive, tensile, compressive again") {
-    const auto r = classify_timeseries(csv("stick.csv", "0,0,1,0\n1,0,1,-1e-6\n2,0,1,2e-5\n3,0,1,-3e-6\n4,0,1,1e-7\n"), s, 1.0);
+    const auto r =
+        classify_timeseries(csv("stick.csv", "0,0,1,0\n1,0,1,-1e-6\n2,0,1,2e-5\n3,0,1,-3e-6\n4,0,1,1e-7\n"), s, 1.0);
     CHECK(r.outcome == Outcome::stick);
     CHECK(r.rebound_speed == 0);
   }

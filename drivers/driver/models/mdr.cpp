@@ -71,9 +71,9 @@ struct MdrFactory : ModelFactoryBase<Mdr<T, Effects<Bits>, Device>> {
   // law), while pi a^2 shrinks to 0 where the force does.
   static constexpr int contact_extra_count = 12;
   static std::vector<std::string> contact_extra_names() {
-    return {"mdr_force [N]",       "area [m^2]",        "mean_pressure [Pa]", "delta_max [m]",
-            "yielded_sides",       "adhesive_radius [m]", "side0_force [N]",  "side1_force [N]",
-            "side0_overlap [m]",   "side1_overlap [m]",   "contact_radius [m]", "area_from_radius [m^2]"};
+    return {"mdr_force [N]",     "area [m^2]",          "mean_pressure [Pa]", "delta_max [m]",
+            "yielded_sides",     "adhesive_radius [m]", "side0_force [N]",    "side1_force [N]",
+            "side0_overlap [m]", "side1_overlap [m]",   "contact_radius [m]", "area_from_radius [m^2]"};
   }
   static KOKKOS_INLINE_FUNCTION void contact_extras(const model_type& m, const ContactGeometry<T>& g,
                                                     const HistoryRow<T, Device>& row, T* out) {
@@ -153,11 +153,13 @@ double mdr_scene_check(const Scene& s) {
   const MdrOptions o = mdr_options(s);
   const unsigned e = s.model.effects;
   if ((e & kRadiusGrowth) && !(e & kPlasticity))
-    throw SceneError("model.effects: radius_growth needs plasticity for model mdr (the apparent radius grows by "
-                     "plastic flow, MDR (37))");
+    throw SceneError(
+        "model.effects: radius_growth needs plasticity for model mdr (the apparent radius grows by "
+        "plastic flow, MDR (37))");
   for (int m : particle_materials(s))
     if (s.materials[m].rigid)
-      throw SceneError("materials." + s.materials[m].name + " is rigid, but model mdr needs deformable particles "
+      throw SceneError("materials." + s.materials[m].name +
+                       " is rigid, but model mdr needs deformable particles "
                        "(each side of an MDR contact is a deformable particle against a rigid flat)");
   if (!(e & kAdhesion)) return 0.0;
   const double pi = 3.14159265358979323846;

@@ -59,15 +59,17 @@ KOKKOS_FORCEINLINE_FUNCTION ContactGeometry<T> pair_geometry(const Particles<T, 
   if (p.box.periodic()) d = p.box.minimum_image(d);
   const T dist = norm(d);
   ContactGeometry<T> g;
-  g.i = i; g.j = j;
+  g.i = i;
+  g.j = j;
   g.pair = pair_table_index(p, i, j, nmat);
-  g.R_i = p.radius(i); g.R_j = p.radius(j);
+  g.R_i = p.radius(i);
+  g.R_j = p.radius(j);
   // Coincident centres have no normal; pick x so the law still sees the overlap.
   g.n = dist > T(0) ? (T(1) / dist) * d : Vec3<T>(T(1), T(0), T(0));
   g.delta = g.R_i + g.R_j - dist;
   g.R_eff = g.R_i * g.R_j / (g.R_i + g.R_j);  // radii > 0 (host validation)
   const T mi = p.mass(i), mj = p.mass(j);
-  g.m_eff = mi * mj / (mi + mj);              // masses > 0 (host validation)
+  g.m_eff = mi * mj / (mi + mj);  // masses > 0 (host validation)
   if (SideOrder) g.i_is_first = p.gid(i) < p.gid(j);
   return g;
 }
@@ -76,11 +78,14 @@ template <class T, class Device>
 KOKKOS_FORCEINLINE_FUNCTION ContactGeometry<T> wall_geometry(const Particles<T, Device>& p, const Walls<T, Device>& w,
                                                              int i, int wl, int nmat) {
   ContactGeometry<T> g;
-  g.i = i; g.j = -1; g.wall = wl;
+  g.i = i;
+  g.j = -1;
+  g.wall = wl;
   g.pair = p.material(i) * nmat + w.material(wl);
   g.n = load3(w.normal, wl);
   const T dist = dot(load3(p.x, i) - load3(w.point, wl), g.n);
-  g.R_i = p.radius(i); g.R_j = T(0);
+  g.R_i = p.radius(i);
+  g.R_j = T(0);
   g.delta = g.R_i - dist;
   g.R_eff = g.R_i;
   g.m_eff = p.mass(i);
@@ -99,10 +104,9 @@ namespace detail {
 template <bool IsPair, class Model, class T, class Device, class Conv, class FAccess, class TAccess>
 KOKKOS_FORCEINLINE_FUNCTION void finish_contact(const Model& model, const Conv& conv, const Particles<T, Device>& p,
                                                 ContactGeometry<T>& g, const Vec3<T>& v_rel, T arm_i, T arm_j,
-                                                const HistoryRow<T, Device>& row,
-                                                const ContactOutputs<T, Device>& out,
-                                                const ContactForceBuffer<T, Device>& buf, int k,
-                                                const FAccess& fa, const TAccess& ta, bool reversed = false) {
+                                                const HistoryRow<T, Device>& row, const ContactOutputs<T, Device>& out,
+                                                const ContactForceBuffer<T, Device>& buf, int k, const FAccess& fa,
+                                                const TAccess& ta, bool reversed = false) {
   using Eff = typename Model::effects;
   // contact-point velocity of i relative to j: v_i - v_j + w_i x r_i - w_j x r_j
   Vec3<T> w_arm = arm_i * load3(p.omega, g.i);
@@ -117,15 +121,20 @@ KOKKOS_FORCEINLINE_FUNCTION void finish_contact(const Model& model, const Conv& 
     if (out.normal_force.extent(0) > 0) out.normal_force(k) = T(0);
     if (out.overlap.extent(0) > 0) out.overlap(k) = g.delta;
     if (buf.enabled()) {
-      store3(buf.force, k, Vec3<T>()); store3(buf.torque_i, k, Vec3<T>()); store3(buf.torque_j, k, Vec3<T>());
+      store3(buf.force, k, Vec3<T>());
+      store3(buf.torque_i, k, Vec3<T>());
+      store3(buf.torque_j, k, Vec3<T>());
     }
     return;
   }
   T fn = nf.f;
   if (Eff::damping) {
     const T fd = nf.damping * math::sqrt_nonneg(g.m_eff * nf.k_n) * g.delta_dot;
-    if (!nf.damp_compressive_only) fn += fd;
-    else if (fn > T(0)) fn = conv.damp_may_pull ? fn + fd : math::max(fn + fd, T(0));  // by default damping never turns a push into a pull
+    if (!nf.damp_compressive_only)
+      fn += fd;
+    else if (fn > T(0))
+      fn =
+          conv.damp_may_pull ? fn + fd : math::max(fn + fd, T(0));  // by default damping never turns a push into a pull
   }
   Vec3<T> F = fn * g.n;
   Vec3<T> nxft;  // n x F_t: the torques are -arm_i (n x F_t) on i and -arm_j (n x F_t) on j
@@ -189,7 +198,11 @@ void pair_kernel(const Model& model, const Particles<T, Device>& p, const Contac
       "epac::compute_pair_forces", Kokkos::RangePolicy<exec>(0, c.count), KOKKOS_LAMBDA(int k) {
         int i = first(k), j = second(k);
         const bool reversed = Canonical && p.gid(j) < p.gid(i);
-        if (reversed) { const int t = i; i = j; j = t; }
+        if (reversed) {
+          const int t = i;
+          i = j;
+          j = t;
+        }
         // i_is_first stays true (its default): canonical orientation, or a law that ignores it
         ContactGeometry<T> g = pair_geometry<T, Device, false>(p, i, j, nmat);
         g.contact = k;
@@ -207,8 +220,7 @@ void pair_kernel(const Model& model, const Particles<T, Device>& p, const Contac
 template <class Model, class T, class Device, class Policy>
 void compute_pair_forces(const Model& model, const Particles<T, Device>& p, const ContactList<Device>& c,
                          const ContactHistory<T, Device>& h, T dt, const ForceSums<T, Device, Policy>& sums,
-                         const ContactOutputs<T, Device>& out = {},
-                         const ContactForceBuffer<T, Device>& buf = {}) {
+                         const ContactOutputs<T, Device>& out = {}, const ContactForceBuffer<T, Device>& buf = {}) {
   static_assert(check_contact_model<Model, T, Device>(), "epac: Model is not a contact model (see above)");
   // Canonical orientation: each pair is evaluated as (smaller global id, larger), so the
   // arithmetic does not depend on how the list names it (with FMA contraction even a sum such as
@@ -217,17 +229,19 @@ void compute_pair_forces(const Model& model, const Particles<T, Device>& p, cons
   // laws only in the deterministic mode (buffer), so that their default path is unchanged (a
   // runtime test in the kernel cost Hertz without friction 8% more instructions per contact).
   constexpr bool ids_needed = detail::uses_side_order<Model>::value || Model::effects::friction;
-  if constexpr (ids_needed) detail::pair_kernel<true>(model, p, c, h, dt, sums, out, buf);
-  else if (buf.enabled()) detail::pair_kernel<true>(model, p, c, h, dt, sums, out, buf);
-  else detail::pair_kernel<false>(model, p, c, h, dt, sums, out, buf);
+  if constexpr (ids_needed)
+    detail::pair_kernel<true>(model, p, c, h, dt, sums, out, buf);
+  else if (buf.enabled())
+    detail::pair_kernel<true>(model, p, c, h, dt, sums, out, buf);
+  else
+    detail::pair_kernel<false>(model, p, c, h, dt, sums, out, buf);
 }
 
 // Particle-wall contacts: c.first = particle, c.second = wall index.
 template <class Model, class T, class Device, class Policy>
 void compute_wall_forces(const Model& model, const Particles<T, Device>& p, const Walls<T, Device>& w,
                          const ContactList<Device>& c, const ContactHistory<T, Device>& h, T dt,
-                         const ForceSums<T, Device, Policy>& sums,
-                         const ContactOutputs<T, Device>& out = {},
+                         const ForceSums<T, Device, Policy>& sums, const ContactOutputs<T, Device>& out = {},
                          const ContactForceBuffer<T, Device>& buf = {}) {
   static_assert(check_contact_model<Model, T, Device>(), "epac: Model is not a contact model (see above)");
   using exec = typename Device::execution_space;
@@ -260,8 +274,7 @@ void compute_wall_forces(const Model& model, const Particles<T, Device>& p, cons
 // forms above.
 template <class Model, class T, class Device>
 void compute_pair_forces(const Model& model, const Particles<T, Device>& p, const ContactList<Device>& c,
-                         const ContactHistory<T, Device>& h, T dt,
-                         const ContactOutputs<T, Device>& out = {},
+                         const ContactHistory<T, Device>& h, T dt, const ContactOutputs<T, Device>& out = {},
                          const ContactForceBuffer<T, Device>& buf = {}) {
   const ForceSums<T, Device, AtomicSums> sums(p);  // aliases p.force / p.torque: begin/end are no-ops
   compute_pair_forces(model, p, c, h, dt, sums, out, buf);
@@ -270,8 +283,7 @@ void compute_pair_forces(const Model& model, const Particles<T, Device>& p, cons
 template <class Model, class T, class Device>
 void compute_wall_forces(const Model& model, const Particles<T, Device>& p, const Walls<T, Device>& w,
                          const ContactList<Device>& c, const ContactHistory<T, Device>& h, T dt,
-                         const ContactOutputs<T, Device>& out = {},
-                         const ContactForceBuffer<T, Device>& buf = {}) {
+                         const ContactOutputs<T, Device>& out = {}, const ContactForceBuffer<T, Device>& buf = {}) {
   const ForceSums<T, Device, AtomicSums> sums(p);
   compute_wall_forces(model, p, w, c, h, dt, sums, out, buf);
 }

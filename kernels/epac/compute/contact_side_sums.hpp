@@ -62,23 +62,24 @@ void reduce_side_sums(const Particles<T, Device>& p, const ContactSideSums<T, Co
   if (!has_pairs && !has_walls) return;
   const auto gid = p.gid;
   const auto first = pairs.first, second = pairs.second;
-  Kokkos::parallel_for("epac::reduce_side_sums", Kokkos::RangePolicy<exec>(0, p.n), KOKKOS_LAMBDA(int i) {
-    T acc[Columns];
-    for (int c = 0; c < Columns; ++c) acc[c] = target(i, c);
-    if (has_pairs)
-      for (int e = pair_inc.offsets(i); e < pair_inc.offsets(i + 1); ++e) {
-        const int k = pair_inc.entries(e) / 2;
-        const int other = pair_inc.entries(e) % 2 == 0 ? second(k) : first(k);
-        const int side = gid(i) < gid(other) ? 0 : 1;
-        for (int c = 0; c < Columns; ++c) acc[c] += s.pair(k, side, c);
-      }
-    if (has_walls)
-      for (int e = wall_inc.offsets(i); e < wall_inc.offsets(i + 1); ++e) {
-        const int k = wall_inc.entries(e) / 2;
-        for (int c = 0; c < Columns; ++c) acc[c] += s.wall(k, c);
-      }
-    for (int c = 0; c < Columns; ++c) target(i, c) = acc[c];
-  });
+  Kokkos::parallel_for(
+      "epac::reduce_side_sums", Kokkos::RangePolicy<exec>(0, p.n), KOKKOS_LAMBDA(int i) {
+        T acc[Columns];
+        for (int c = 0; c < Columns; ++c) acc[c] = target(i, c);
+        if (has_pairs)
+          for (int e = pair_inc.offsets(i); e < pair_inc.offsets(i + 1); ++e) {
+            const int k = pair_inc.entries(e) / 2;
+            const int other = pair_inc.entries(e) % 2 == 0 ? second(k) : first(k);
+            const int side = gid(i) < gid(other) ? 0 : 1;
+            for (int c = 0; c < Columns; ++c) acc[c] += s.pair(k, side, c);
+          }
+        if (has_walls)
+          for (int e = wall_inc.offsets(i); e < wall_inc.offsets(i + 1); ++e) {
+            const int k = wall_inc.entries(e) / 2;
+            for (int c = 0; c < Columns; ++c) acc[c] += s.wall(k, c);
+          }
+        for (int c = 0; c < Columns; ++c) target(i, c) = acc[c];
+      });
 }
 
 }  // namespace epac

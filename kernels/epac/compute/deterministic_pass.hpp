@@ -35,7 +35,8 @@ struct DeterministicPass {
     pair_incidence = build_incidence(p.n, pairs, pair_contact_keys(p, pairs), true);
     wall_incidence = build_incidence(p.n, walls, wall_contact_keys(p, walls), false);
     auto fit = [](ContactForceBuffer<T, Device>& b, int count) {
-      if (count > 0 && static_cast<int>(b.force.extent(0)) < count) b = ContactForceBuffer<T, Device>(count + count / 4 + 16);
+      if (count > 0 && static_cast<int>(b.force.extent(0)) < count)
+        b = ContactForceBuffer<T, Device>(count + count / 4 + 16);
     };
     fit(pair_buffer, pairs.count);
     fit(wall_buffer, walls.count);
@@ -44,7 +45,8 @@ struct DeterministicPass {
   // Host, before the pass's kernels: clears the model's per-side sums.
   template <class Model>
   void begin(Model& model) const {
-    if constexpr (detail::has_deterministic_hooks<Model>::value) model.begin_deterministic_pass(pairs.count, walls.count);
+    if constexpr (detail::has_deterministic_hooks<Model>::value)
+      model.begin_deterministic_pass(pairs.count, walls.count);
   }
 
   // Host, after the pass's kernels: adds the buffered forces and torques to p.force / p.torque

@@ -25,37 +25,44 @@ ContactIncidence<Device> build_incidence(int n_particles, const ContactList<Devi
   inc.offsets = Kokkos::View<int*, Device>("incidence.offsets", n_particles + 1);
   auto off = inc.offsets;
   Kokkos::View<int*, Device> fill("incidence.fill", n_particles);
-  Kokkos::parallel_for("epac::incidence_count", Kokkos::RangePolicy<exec>(0, c.count), KOKKOS_LAMBDA(int k) {
-    Kokkos::atomic_add(&off(c.first(k) + 1), 1);
-    if (two_sided) Kokkos::atomic_add(&off(c.second(k) + 1), 1);
-  });
-  Kokkos::parallel_scan("epac::incidence_scan", Kokkos::RangePolicy<exec>(0, n_particles + 1),
-                        KOKKOS_LAMBDA(int i, int& sum, bool final) {
-                          sum += off(i);
-                          if (final) off(i) = sum;
-                        });
+  Kokkos::parallel_for(
+      "epac::incidence_count", Kokkos::RangePolicy<exec>(0, c.count), KOKKOS_LAMBDA(int k) {
+        Kokkos::atomic_add(&off(c.first(k) + 1), 1);
+        if (two_sided) Kokkos::atomic_add(&off(c.second(k) + 1), 1);
+      });
+  Kokkos::parallel_scan(
+      "epac::incidence_scan", Kokkos::RangePolicy<exec>(0, n_particles + 1),
+      KOKKOS_LAMBDA(int i, int& sum, bool final) {
+        sum += off(i);
+        if (final) off(i) = sum;
+      });
   int total = 0;
   Kokkos::deep_copy(total, Kokkos::subview(off, n_particles));
   inc.entries = Kokkos::View<int*, Device>("incidence.entries", total);
   auto ent = inc.entries;
-  Kokkos::parallel_for("epac::incidence_fill", Kokkos::RangePolicy<exec>(0, c.count), KOKKOS_LAMBDA(int k) {
-    const int a = c.first(k);
-    ent(off(a) + Kokkos::atomic_fetch_add(&fill(a), 1)) = 2 * k;
-    if (two_sided) {
-      const int b = c.second(k);
-      ent(off(b) + Kokkos::atomic_fetch_add(&fill(b), 1)) = 2 * k + 1;
-    }
-  });
+  Kokkos::parallel_for(
+      "epac::incidence_fill", Kokkos::RangePolicy<exec>(0, c.count), KOKKOS_LAMBDA(int k) {
+        const int a = c.first(k);
+        ent(off(a) + Kokkos::atomic_fetch_add(&fill(a), 1)) = 2 * k;
+        if (two_sided) {
+          const int b = c.second(k);
+          ent(off(b) + Kokkos::atomic_fetch_add(&fill(b), 1)) = 2 * k + 1;
+        }
+      });
   // The fill order above depends on thread timing: sort each particle's few entries by key.
-  Kokkos::parallel_for("epac::incidence_sort", Kokkos::RangePolicy<exec>(0, n_particles), KOKKOS_LAMBDA(int i) {
-    for (int s = off(i) + 1; s < off(i + 1); ++s) {
-      const int e = ent(s);
-      const std::uint64_t key = keys(e / 2);
-      int t = s - 1;
-      while (t >= off(i) && keys(ent(t) / 2) > key) { ent(t + 1) = ent(t); --t; }
-      ent(t + 1) = e;
-    }
-  });
+  Kokkos::parallel_for(
+      "epac::incidence_sort", Kokkos::RangePolicy<exec>(0, n_particles), KOKKOS_LAMBDA(int i) {
+        for (int s = off(i) + 1; s < off(i + 1); ++s) {
+          const int e = ent(s);
+          const std::uint64_t key = keys(e / 2);
+          int t = s - 1;
+          while (t >= off(i) && keys(ent(t) / 2) > key) {
+            ent(t + 1) = ent(t);
+            --t;
+          }
+          ent(t + 1) = e;
+        }
+      });
   return inc;
 }
 
@@ -66,21 +73,22 @@ void reduce_contact_forces(const Particles<T, Device>& p, const ContactForceBuff
                            const ContactIncidence<Device>& inc) {
   using exec = typename Device::execution_space;
   if (inc.entries.extent(0) == 0) return;
-  Kokkos::parallel_for("epac::reduce_contact_forces", Kokkos::RangePolicy<exec>(0, p.n), KOKKOS_LAMBDA(int i) {
-    Vec3<T> f = load3(p.force, i), t = load3(p.torque, i);
-    for (int s = inc.offsets(i); s < inc.offsets(i + 1); ++s) {
-      const int k = inc.entries(s) / 2;
-      if (inc.entries(s) % 2 == 0) {
-        f += load3(buf.force, k);
-        t += load3(buf.torque_i, k);
-      } else {
-        f -= load3(buf.force, k);
-        t += load3(buf.torque_j, k);
-      }
-    }
-    store3(p.force, i, f);
-    store3(p.torque, i, t);
-  });
+  Kokkos::parallel_for(
+      "epac::reduce_contact_forces", Kokkos::RangePolicy<exec>(0, p.n), KOKKOS_LAMBDA(int i) {
+        Vec3<T> f = load3(p.force, i), t = load3(p.torque, i);
+        for (int s = inc.offsets(i); s < inc.offsets(i + 1); ++s) {
+          const int k = inc.entries(s) / 2;
+          if (inc.entries(s) % 2 == 0) {
+            f += load3(buf.force, k);
+            t += load3(buf.torque_i, k);
+          } else {
+            f -= load3(buf.force, k);
+            t += load3(buf.torque_j, k);
+          }
+        }
+        store3(p.force, i, f);
+        store3(p.torque, i, t);
+      });
 }
 
 }  // namespace epac

@@ -66,18 +66,18 @@ constexpr int kHistoryFromOverlapsIncrements = 100;
 
 // Overlaps of the lists at the present positions, in terms of the initial radii R_o.
 struct OverlapCensus {
-  int pair_contacts = 0;          // pair contacts with delta_o > 0
-  int wall_contacts = 0;          // wall contacts with delta_o > 0
-  double max_overlap_ratio = 0;   // largest delta_o / min(R_o,i, R_o,j) (walls: delta_o / R_o,i); 0 if none
+  int pair_contacts = 0;         // pair contacts with delta_o > 0
+  int wall_contacts = 0;         // wall contacts with delta_o > 0
+  double max_overlap_ratio = 0;  // largest delta_o / min(R_o,i, R_o,j) (walls: delta_o / R_o,i); 0 if none
   int contacts() const { return pair_contacts + wall_contacts; }
 };
 
 // What history_from_overlaps did.
 struct HistoryFromOverlapsReport {
-  OverlapCensus overlaps;        // before the load (the contacts it loaded)
-  int increments = 0;            // K
-  double max_radius_ratio = 1;   // largest R / R_o after the load (1 without radius growth)
-  long long guard_hits = 0;      // growth-guard hits during the load (models with guard_hits())
+  OverlapCensus overlaps;       // before the load (the contacts it loaded)
+  int increments = 0;           // K
+  double max_radius_ratio = 1;  // largest R / R_o after the load (1 without radius growth)
+  long long guard_hits = 0;     // growth-guard hits during the load (models with guard_hits())
 };
 
 namespace detail {
@@ -197,8 +197,7 @@ template <class Model, class T, class Device>
 HistoryFromOverlapsReport history_from_overlaps(const Model& model, const Particles<T, Device>& p,
                                                 const ContactList<Device>& pairs,
                                                 const ContactHistory<T, Device>& pair_history,
-                                                const Walls<T, Device>& walls,
-                                                const ContactList<Device>& wall_contacts,
+                                                const Walls<T, Device>& walls, const ContactList<Device>& wall_contacts,
                                                 const ContactHistory<T, Device>& wall_history,
                                                 int increments = kHistoryFromOverlapsIncrements) {
   static_assert(check_contact_model<Model, T, Device>(), "epac: Model is not a contact model (see above)");

@@ -18,9 +18,9 @@ template <class T, class Device>
 Kokkos::View<std::uint64_t*, Device> pair_contact_keys(const Particles<T, Device>& p, const ContactList<Device>& c) {
   using exec = typename Device::execution_space;
   Kokkos::View<std::uint64_t*, Device> keys(Kokkos::view_alloc(Kokkos::WithoutInitializing, "pair_keys"), c.count);
-  Kokkos::parallel_for("epac::pair_contact_keys", Kokkos::RangePolicy<exec>(0, c.count), KOKKOS_LAMBDA(int k) {
-    keys(k) = pair_key(p.gid(c.first(k)), p.gid(c.second(k)));
-  });
+  Kokkos::parallel_for(
+      "epac::pair_contact_keys", Kokkos::RangePolicy<exec>(0, c.count),
+      KOKKOS_LAMBDA(int k) { keys(k) = pair_key(p.gid(c.first(k)), p.gid(c.second(k))); });
   return keys;
 }
 
@@ -29,9 +29,9 @@ template <class T, class Device>
 Kokkos::View<std::uint64_t*, Device> wall_contact_keys(const Particles<T, Device>& p, const ContactList<Device>& c) {
   using exec = typename Device::execution_space;
   Kokkos::View<std::uint64_t*, Device> keys(Kokkos::view_alloc(Kokkos::WithoutInitializing, "wall_keys"), c.count);
-  Kokkos::parallel_for("epac::wall_contact_keys", Kokkos::RangePolicy<exec>(0, c.count), KOKKOS_LAMBDA(int k) {
-    keys(k) = wall_key(p.gid(c.first(k)), c.second(k));
-  });
+  Kokkos::parallel_for(
+      "epac::wall_contact_keys", Kokkos::RangePolicy<exec>(0, c.count),
+      KOKKOS_LAMBDA(int k) { keys(k) = wall_key(p.gid(c.first(k)), c.second(k)); });
   return keys;
 }
 
@@ -62,11 +62,17 @@ ContactHistory<T, Device> remap_history(const ContactHistory<T, Device>& old,
   using key_view = Kokkos::View<std::uint64_t*, Device>;
   key_view okeys = old.keys;
   std::uint64_t kmin = 0, kmax = 0;
-  Kokkos::parallel_reduce("epac::history_key_min", Kokkos::RangePolicy<exec>(0, n_old),
-      KOKKOS_LAMBDA(int k, std::uint64_t& m) { if (okeys(k) < m) m = okeys(k); },
+  Kokkos::parallel_reduce(
+      "epac::history_key_min", Kokkos::RangePolicy<exec>(0, n_old),
+      KOKKOS_LAMBDA(int k, std::uint64_t& m) {
+        if (okeys(k) < m) m = okeys(k);
+      },
       Kokkos::Min<std::uint64_t>(kmin));
-  Kokkos::parallel_reduce("epac::history_key_max", Kokkos::RangePolicy<exec>(0, n_old),
-      KOKKOS_LAMBDA(int k, std::uint64_t& m) { if (okeys(k) > m) m = okeys(k); },
+  Kokkos::parallel_reduce(
+      "epac::history_key_max", Kokkos::RangePolicy<exec>(0, n_old),
+      KOKKOS_LAMBDA(int k, std::uint64_t& m) {
+        if (okeys(k) > m) m = okeys(k);
+      },
       Kokkos::Max<std::uint64_t>(kmax));
   if (kmax == kmin) kmax = kmin + 1;
   using op = Kokkos::BinOp1D<key_view>;
@@ -76,18 +82,22 @@ ContactHistory<T, Device> remap_history(const ContactHistory<T, Device>& old,
 
   auto odata = old.data;
   auto ndata = fresh.data;
-  Kokkos::parallel_for("epac::remap_history", Kokkos::RangePolicy<exec>(0, n_new), KOKKOS_LAMBDA(int k) {
-    const std::uint64_t key = new_keys(k);
-    int lo = 0, hi = n_old;  // lower bound in the sorted order
-    while (lo < hi) {
-      const int mid = (lo + hi) / 2;
-      if (okeys(perm(mid)) < key) lo = mid + 1; else hi = mid;
-    }
-    if (lo < n_old && okeys(perm(lo)) == key) {
-      const int src = perm(lo);
-      for (int f = 0; f < fields; ++f) ndata(k, f) = odata(src, f);
-    }
-  });
+  Kokkos::parallel_for(
+      "epac::remap_history", Kokkos::RangePolicy<exec>(0, n_new), KOKKOS_LAMBDA(int k) {
+        const std::uint64_t key = new_keys(k);
+        int lo = 0, hi = n_old;  // lower bound in the sorted order
+        while (lo < hi) {
+          const int mid = (lo + hi) / 2;
+          if (okeys(perm(mid)) < key)
+            lo = mid + 1;
+          else
+            hi = mid;
+        }
+        if (lo < n_old && okeys(perm(lo)) == key) {
+          const int src = perm(lo);
+          for (int f = 0; f < fields; ++f) ndata(k, f) = odata(src, f);
+        }
+      });
   return fresh;
 }
 

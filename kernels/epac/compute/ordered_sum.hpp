@@ -16,12 +16,13 @@ double ordered_sum(const char* label, int n, const Term& term) {
   if (n <= 0) return 0.0;
   const int nchunks = (n + chunk - 1) / chunk;
   Kokkos::View<double*, typename Exec::memory_space> part(std::string(label), nchunks);
-  Kokkos::parallel_for(label, Kokkos::RangePolicy<Exec>(0, nchunks), KOKKOS_LAMBDA(int c) {
-    const int end = (c + 1) * chunk < n ? (c + 1) * chunk : n;
-    double s = 0.0;
-    for (int i = c * chunk; i < end; ++i) s += term(i);
-    part(c) = s;
-  });
+  Kokkos::parallel_for(
+      label, Kokkos::RangePolicy<Exec>(0, nchunks), KOKKOS_LAMBDA(int c) {
+        const int end = (c + 1) * chunk < n ? (c + 1) * chunk : n;
+        double s = 0.0;
+        for (int i = c * chunk; i < end; ++i) s += term(i);
+        part(c) = s;
+      });
   auto h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), part);
   double sum = 0.0;
   for (int c = 0; c < nchunks; ++c) sum += h(c);

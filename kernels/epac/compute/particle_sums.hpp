@@ -55,15 +55,14 @@ struct sums_mode<Exec, DefaultSums>
 #else
     // Kokkos' own choice for ScatterView: duplicated on OpenMP/Threads/HPX, plain on Serial,
     // atomic on device backends.
-    : std::integral_constant<
-          int, std::is_same<typename Kokkos::Impl::Experimental::DefaultDuplication<Exec>::type,
-                            Kokkos::Experimental::ScatterDuplicated>::value
-                   ? 1
-                   : (std::is_same<typename Kokkos::Impl::Experimental::DefaultContribution<
-                                       Exec, Kokkos::Experimental::ScatterNonDuplicated>::type,
-                                   Kokkos::Experimental::ScatterAtomic>::value
-                          ? 2
-                          : 0)> {
+    : std::integral_constant<int, std::is_same<typename Kokkos::Impl::Experimental::DefaultDuplication<Exec>::type,
+                                               Kokkos::Experimental::ScatterDuplicated>::value
+                                      ? 1
+                                      : (std::is_same<typename Kokkos::Impl::Experimental::DefaultContribution<
+                                                          Exec, Kokkos::Experimental::ScatterNonDuplicated>::type,
+                                                      Kokkos::Experimental::ScatterAtomic>::value
+                                             ? 2
+                                             : 0)> {
 #endif
 };
 }  // namespace detail
@@ -84,8 +83,10 @@ struct SumAccess {
   struct Ref {
     T* p;
     KOKKOS_FORCEINLINE_FUNCTION void operator+=(T v) const {
-      if (Mode == 2) Kokkos::atomic_add(p, v);
-      else *p += v;
+      if (Mode == 2)
+        Kokkos::atomic_add(p, v);
+      else
+        *p += v;
     }
   };
   KOKKOS_FORCEINLINE_FUNCTION Ref operator()(int i) const { return {base + i}; }
@@ -107,11 +108,12 @@ struct SumScatter {
   // Global scope on a host backend: acquire() is the calling thread's rank (its size is the pool
   // size), so release() is a no-op and is not called.
   using token_type =
-      std::conditional_t<Mode == 1, Kokkos::Experimental::UniqueToken<exec, Kokkos::Experimental::UniqueTokenScope::Global>,
+      std::conditional_t<Mode == 1,
+                         Kokkos::Experimental::UniqueToken<exec, Kokkos::Experimental::UniqueTokenScope::Global>,
                          detail::NoToken>;
-  T* target = nullptr;        // the particle view's data
-  std::size_t stride = 0;     // its component stride
-  std::size_t block = 0;      // elements per thread copy (n x components)
+  T* target = nullptr;     // the particle view's data
+  std::size_t stride = 0;  // its component stride
+  std::size_t block = 0;   // elements per thread copy (n x components)
   Kokkos::View<T*, Device> copies;
   int ncopies = 0;
   token_type token;
@@ -184,13 +186,19 @@ struct ParticleSum {
 template <class T, class Device, class Policy = DefaultSums>
 struct ForceSums {
   using policy = Policy;
-  ParticleSum<T* [3], Device, Policy> force, torque;
+  ParticleSum<T*[3], Device, Policy> force, torque;
 
   ForceSums() = default;
   explicit ForceSums(const Particles<T, Device>& p) : force(p.force), torque(p.torque) {}  // host
 
-  void begin() { force.begin(); torque.begin(); }  // host
-  void end() { force.end(); torque.end(); }        // host
+  void begin() {
+    force.begin();
+    torque.begin();
+  }  // host
+  void end() {
+    force.end();
+    torque.end();
+  }  // host
   // True when bound to these particles' views (false after the particle arrays were reallocated).
   bool bound_to(const Particles<T, Device>& p) const {
     return force.target.data() == p.force.data() && torque.target.data() == p.torque.data() &&

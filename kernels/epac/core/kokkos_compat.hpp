@@ -17,11 +17,11 @@
 namespace epac {
 namespace math {
 
-#define EPAC_UNARY(FN)                                                    \
-  template <class T>                                                      \
-  KOKKOS_INLINE_FUNCTION T FN(T x) {                                      \
-    static_assert(std::is_floating_point<T>::value, "floating point");   \
-    return EPAC_KOKKOS_MATH_NS::FN(x);                                    \
+#define EPAC_UNARY(FN)                                                 \
+  template <class T>                                                   \
+  KOKKOS_INLINE_FUNCTION T FN(T x) {                                   \
+    static_assert(std::is_floating_point<T>::value, "floating point"); \
+    return EPAC_KOKKOS_MATH_NS::FN(x);                                 \
   }
 EPAC_UNARY(sqrt)
 EPAC_UNARY(cbrt)
@@ -37,26 +37,42 @@ EPAC_UNARY(floor)
 #undef EPAC_UNARY
 
 template <class T>
-KOKKOS_INLINE_FUNCTION T pow(T x, T y) { return EPAC_KOKKOS_MATH_NS::pow(x, y); }
+KOKKOS_INLINE_FUNCTION T pow(T x, T y) {
+  return EPAC_KOKKOS_MATH_NS::pow(x, y);
+}
 template <class T>
-KOKKOS_INLINE_FUNCTION T atan2(T y, T x) { return EPAC_KOKKOS_MATH_NS::atan2(y, x); }
+KOKKOS_INLINE_FUNCTION T atan2(T y, T x) {
+  return EPAC_KOKKOS_MATH_NS::atan2(y, x);
+}
 template <class T>
-KOKKOS_INLINE_FUNCTION bool isfinite(T x) { return EPAC_KOKKOS_MATH_NS::isfinite(x); }
+KOKKOS_INLINE_FUNCTION bool isfinite(T x) {
+  return EPAC_KOKKOS_MATH_NS::isfinite(x);
+}
 
 // min/max/clamp: absent before Kokkos 3.6, so they are ours everywhere.
 template <class T>
-KOKKOS_INLINE_FUNCTION constexpr T min(T a, T b) { return b < a ? b : a; }
+KOKKOS_INLINE_FUNCTION constexpr T min(T a, T b) {
+  return b < a ? b : a;
+}
 template <class T>
-KOKKOS_INLINE_FUNCTION constexpr T max(T a, T b) { return a < b ? b : a; }
+KOKKOS_INLINE_FUNCTION constexpr T max(T a, T b) {
+  return a < b ? b : a;
+}
 template <class T>
-KOKKOS_INLINE_FUNCTION constexpr T clamp(T x, T lo, T hi) { return x < lo ? lo : (hi < x ? hi : x); }
+KOKKOS_INLINE_FUNCTION constexpr T clamp(T x, T lo, T hi) {
+  return x < lo ? lo : (hi < x ? hi : x);
+}
 
 // Domain-guarded forms: each clamps its argument into the function's domain. Use them where
 // round-off can push an argument that is mathematically inside the domain just outside it.
 template <class T>
-KOKKOS_INLINE_FUNCTION T sqrt_nonneg(T x) { return EPAC_KOKKOS_MATH_NS::sqrt(x > T(0) ? x : T(0)); }
+KOKKOS_INLINE_FUNCTION T sqrt_nonneg(T x) {
+  return EPAC_KOKKOS_MATH_NS::sqrt(x > T(0) ? x : T(0));
+}
 template <class T>
-KOKKOS_INLINE_FUNCTION T acos_clamped(T x) { return EPAC_KOKKOS_MATH_NS::acos(clamp(x, T(-1), T(1))); }
+KOKKOS_INLINE_FUNCTION T acos_clamped(T x) {
+  return EPAC_KOKKOS_MATH_NS::acos(clamp(x, T(-1), T(1)));
+}
 // a / b with |b| bounded away from zero by tiny (sign of b kept; b == 0 treated as positive).
 template <class T>
 KOKKOS_INLINE_FUNCTION T safe_div(T a, T b, T tiny) {
@@ -65,7 +81,9 @@ KOKKOS_INLINE_FUNCTION T safe_div(T a, T b, T tiny) {
 }
 
 template <class T>
-KOKKOS_INLINE_FUNCTION constexpr T sign(T x) { return x < T(0) ? T(-1) : T(1); }
+KOKKOS_INLINE_FUNCTION constexpr T sign(T x) {
+  return x < T(0) ? T(-1) : T(1);
+}
 
 }  // namespace math
 
@@ -93,7 +111,6 @@ inline std::unique_ptr<Kokkos::ScopeGuard> start_kokkos(int threads) {  // host
 }
 
 // Default device for epac containers.
-using DefaultDevice = Kokkos::Device<Kokkos::DefaultExecutionSpace,
-                                     Kokkos::DefaultExecutionSpace::memory_space>;
+using DefaultDevice = Kokkos::Device<Kokkos::DefaultExecutionSpace, Kokkos::DefaultExecutionSpace::memory_space>;
 
 }  // namespace epac

@@ -14,8 +14,8 @@ namespace epac {
 
 template <class T>
 struct RootResult {
-  T x;          // best estimate of the root (always inside the bracket)
-  int iters;    // iterations used
+  T x;        // best estimate of the root (always inside the bracket)
+  int iters;  // iterations used
   bool converged;
   bool bracketed;  // false: f(lo) and f(hi) had the same sign; x is the end with smaller |f|
 };
@@ -25,7 +25,7 @@ struct RootResult {
 // change, in at most max_iter iterations.
 template <class T>
 struct NewtonBracket {
-  T a, b;             // f(a) < 0 < f(b)
+  T a, b;  // f(a) < 0 < f(b)
   T x, dx, dx_old;
   T rel_tol;
 
@@ -33,8 +33,14 @@ struct NewtonBracket {
   // at an end, or no sign change); otherwise sets up the bracket and the first point x.
   KOKKOS_INLINE_FUNCTION bool start(T lo, T hi, T flo, T fhi, T tol, RootResult<T>& done) {
     rel_tol = tol;
-    if (flo == T(0)) { done = {lo, 0, true, true}; return true; }
-    if (fhi == T(0)) { done = {hi, 0, true, true}; return true; }
+    if (flo == T(0)) {
+      done = {lo, 0, true, true};
+      return true;
+    }
+    if (fhi == T(0)) {
+      done = {hi, 0, true, true};
+      return true;
+    }
     if ((flo > T(0)) == (fhi > T(0))) {
       done = {math::fabs(flo) < math::fabs(fhi) ? lo : hi, 0, false, false};
       return true;
@@ -64,7 +70,10 @@ struct NewtonBracket {
   // With f at the new x: shrinks the bracket; true when converged.
   KOKKOS_INLINE_FUNCTION bool update(T f) {
     if (f == T(0)) return true;
-    if (f < T(0)) a = x; else b = x;
+    if (f < T(0))
+      a = x;
+    else
+      b = x;
     const T scale = math::max(math::fabs(a), math::fabs(b));
     return math::fabs(b - a) <= rel_tol * scale || math::fabs(dx) <= rel_tol * math::fabs(x);
   }
@@ -73,8 +82,7 @@ struct NewtonBracket {
 // Solves f(x) = 0 on [lo, hi]; fdf(x, f, df) writes f(x) and f'(x). Host and device: fdf must be
 // callable on the device (a KOKKOS_LAMBDA or a device-callable functor).
 template <class T, class FDF>
-KOKKOS_INLINE_FUNCTION RootResult<T> bracketed_newton(const FDF& fdf, T lo, T hi, T rel_tol,
-                                                      int max_iter = 100) {
+KOKKOS_INLINE_FUNCTION RootResult<T> bracketed_newton(const FDF& fdf, T lo, T hi, T rel_tol, int max_iter = 100) {
   T flo, fhi, f, df;
   fdf(lo, flo, df);
   fdf(hi, fhi, df);

@@ -13,29 +13,58 @@ struct Vec3 {
   KOKKOS_INLINE_FUNCTION constexpr Vec3(T a, T b, T c) : x(a), y(b), z(c) {}
   KOKKOS_INLINE_FUNCTION T& operator[](int k) { return k == 0 ? x : (k == 1 ? y : z); }
   KOKKOS_INLINE_FUNCTION T operator[](int k) const { return k == 0 ? x : (k == 1 ? y : z); }
-  KOKKOS_INLINE_FUNCTION Vec3& operator+=(const Vec3& o) { x += o.x; y += o.y; z += o.z; return *this; }
-  KOKKOS_INLINE_FUNCTION Vec3& operator-=(const Vec3& o) { x -= o.x; y -= o.y; z -= o.z; return *this; }
-  KOKKOS_INLINE_FUNCTION Vec3& operator*=(T s) { x *= s; y *= s; z *= s; return *this; }
+  KOKKOS_INLINE_FUNCTION Vec3& operator+=(const Vec3& o) {
+    x += o.x;
+    y += o.y;
+    z += o.z;
+    return *this;
+  }
+  KOKKOS_INLINE_FUNCTION Vec3& operator-=(const Vec3& o) {
+    x -= o.x;
+    y -= o.y;
+    z -= o.z;
+    return *this;
+  }
+  KOKKOS_INLINE_FUNCTION Vec3& operator*=(T s) {
+    x *= s;
+    y *= s;
+    z *= s;
+    return *this;
+  }
 };
 
 template <class T>
-KOKKOS_INLINE_FUNCTION Vec3<T> operator+(Vec3<T> a, const Vec3<T>& b) { return a += b; }
+KOKKOS_INLINE_FUNCTION Vec3<T> operator+(Vec3<T> a, const Vec3<T>& b) {
+  return a += b;
+}
 template <class T>
-KOKKOS_INLINE_FUNCTION Vec3<T> operator-(Vec3<T> a, const Vec3<T>& b) { return a -= b; }
+KOKKOS_INLINE_FUNCTION Vec3<T> operator-(Vec3<T> a, const Vec3<T>& b) {
+  return a -= b;
+}
 template <class T>
-KOKKOS_INLINE_FUNCTION Vec3<T> operator-(const Vec3<T>& a) { return Vec3<T>(-a.x, -a.y, -a.z); }
+KOKKOS_INLINE_FUNCTION Vec3<T> operator-(const Vec3<T>& a) {
+  return Vec3<T>(-a.x, -a.y, -a.z);
+}
 template <class T>
-KOKKOS_INLINE_FUNCTION Vec3<T> operator*(T s, Vec3<T> a) { return a *= s; }
+KOKKOS_INLINE_FUNCTION Vec3<T> operator*(T s, Vec3<T> a) {
+  return a *= s;
+}
 template <class T>
-KOKKOS_INLINE_FUNCTION Vec3<T> operator*(Vec3<T> a, T s) { return a *= s; }
+KOKKOS_INLINE_FUNCTION Vec3<T> operator*(Vec3<T> a, T s) {
+  return a *= s;
+}
 template <class T>
-KOKKOS_INLINE_FUNCTION T dot(const Vec3<T>& a, const Vec3<T>& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+KOKKOS_INLINE_FUNCTION T dot(const Vec3<T>& a, const Vec3<T>& b) {
+  return a.x * b.x + a.y * b.y + a.z * b.z;
+}
 template <class T>
 KOKKOS_INLINE_FUNCTION Vec3<T> cross(const Vec3<T>& a, const Vec3<T>& b) {
   return Vec3<T>(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
 }
 template <class T>
-KOKKOS_INLINE_FUNCTION T norm(const Vec3<T>& a) { return math::sqrt(dot(a, a)); }
+KOKKOS_INLINE_FUNCTION T norm(const Vec3<T>& a) {
+  return math::sqrt(dot(a, a));
+}
 
 // Load / store / atomic-add a row of an (n x 3) view.
 template <class View>
@@ -44,7 +73,9 @@ KOKKOS_INLINE_FUNCTION Vec3<typename View::non_const_value_type> load3(const Vie
 }
 template <class View, class T>
 KOKKOS_INLINE_FUNCTION void store3(const View& v, int i, const Vec3<T>& a) {
-  v(i, 0) = a.x; v(i, 1) = a.y; v(i, 2) = a.z;
+  v(i, 0) = a.x;
+  v(i, 1) = a.y;
+  v(i, 2) = a.z;
 }
 template <class View, class T>
 KOKKOS_INLINE_FUNCTION void atomic_add3(const View& v, int i, const Vec3<T>& a) {

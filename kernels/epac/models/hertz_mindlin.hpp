@@ -33,8 +33,7 @@ struct HertzMindlin {
   Kokkos::View<HertzMindlinPair<T>*, Device> pairs;
   int nmat = 0;
 
-  KOKKOS_INLINE_FUNCTION NormalForce<T> normal(const ContactGeometry<T>& g,
-                                               const HistoryRow<T, Device>&) const {
+  KOKKOS_INLINE_FUNCTION NormalForce<T> normal(const ContactGeometry<T>& g, const HistoryRow<T, Device>&) const {
     NormalForce<T> r;
     if (g.delta <= T(0)) return r;
     const HertzMindlinPair<T> p = pairs(g.pair);
@@ -42,8 +41,15 @@ struct HertzMindlin {
     r.active = true;
     r.f = T(4) / T(3) * p.E_star * a * g.delta;
     r.k_n = T(2) * p.E_star * a;
-    if (Eff::damping) { r.damping = p.c_damp; r.damping_t = p.c_damp; r.damp_compressive_only = true; }
-    if (Eff::friction) { r.k_t = p.kt_over_kn * r.k_n; r.mu = p.mu; }
+    if (Eff::damping) {
+      r.damping = p.c_damp;
+      r.damping_t = p.c_damp;
+      r.damp_compressive_only = true;
+    }
+    if (Eff::friction) {
+      r.k_t = p.kt_over_kn * r.k_n;
+      r.mu = p.mu;
+    }
     return r;
   }
 
@@ -58,13 +64,16 @@ struct HertzMindlin {
       for (int b = 0; b < m.nmat; ++b) {
         const Material& A = materials[a];
         const Material& B = materials[b];
-        if (A.rigid && B.rigid) { h(a * m.nmat + b) = {T(0), T(0), T(0), T(0)}; continue; }
+        if (A.rigid && B.rigid) {
+          h(a * m.nmat + b) = {T(0), T(0), T(0), T(0)};
+          continue;
+        }
         const PairProperties pp = pair_properties(A, B);
         const std::string from = "the moduli of '" + A.name + "' and '" + B.name + "'";  // host
         require_representable<T>("hertz_mindlin: E_star", pp.E_star, from);
         require_representable<T>("hertz_mindlin: kt_over_kn", 4.0 * pp.G_star / pp.E_star, from);
-        h(a * m.nmat + b) = {T(pp.E_star), T(4.0 * pp.G_star / pp.E_star),
-                             T(hertz_damping_coefficient(pp.restitution)), T(pp.friction)};
+        h(a * m.nmat + b) = {T(pp.E_star), T(4.0 * pp.G_star / pp.E_star), T(hertz_damping_coefficient(pp.restitution)),
+                             T(pp.friction)};
       }
     Kokkos::deep_copy(m.pairs, h);
     return m;

@@ -28,16 +28,21 @@ struct LinearSpring {
   Kokkos::View<LinearSpringPair<T>*, Device> pairs;
   int nmat = 0;
 
-  KOKKOS_INLINE_FUNCTION NormalForce<T> normal(const ContactGeometry<T>& g,
-                                               const HistoryRow<T, Device>&) const {
+  KOKKOS_INLINE_FUNCTION NormalForce<T> normal(const ContactGeometry<T>& g, const HistoryRow<T, Device>&) const {
     NormalForce<T> r;
     if (g.delta <= T(0)) return r;
     const LinearSpringPair<T> p = pairs(g.pair);
     r.active = true;
     r.f = p.k_n * g.delta;
     r.k_n = p.k_n;
-    if (Eff::damping) { r.damping = p.c_damp; r.damping_t = p.c_damp; }
-    if (Eff::friction) { r.k_t = p.kt_over_kn * p.k_n; r.mu = p.mu; }
+    if (Eff::damping) {
+      r.damping = p.c_damp;
+      r.damping_t = p.c_damp;
+    }
+    if (Eff::friction) {
+      r.k_t = p.kt_over_kn * p.k_n;
+      r.mu = p.mu;
+    }
     return r;
   }
 
@@ -51,10 +56,13 @@ struct LinearSpring {
     auto h = Kokkos::create_mirror_view(m.pairs);
     for (int a = 0; a < m.nmat; ++a)
       for (int b = 0; b < m.nmat; ++b) {
-        if (materials[a].rigid && materials[b].rigid) { h(a * m.nmat + b) = {T(0), T(0), T(0), T(0)}; continue; }
+        if (materials[a].rigid && materials[b].rigid) {
+          h(a * m.nmat + b) = {T(0), T(0), T(0), T(0)};
+          continue;
+        }
         const PairProperties pp = pair_properties(materials[a], materials[b]);
-        h(a * m.nmat + b) = {T(k_n), T(4.0 * pp.G_star / pp.E_star),
-                             T(2.0 * linear_damping_ratio(pp.restitution)), T(pp.friction)};
+        h(a * m.nmat + b) = {T(k_n), T(4.0 * pp.G_star / pp.E_star), T(2.0 * linear_damping_ratio(pp.restitution)),
+                             T(pp.friction)};
       }
     Kokkos::deep_copy(m.pairs, h);
     return m;

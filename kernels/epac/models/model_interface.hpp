@@ -47,14 +47,12 @@ struct has_effect_flags : std::false_type {};
 template <class M>
 struct has_effect_flags<M, std::void_t<std::integral_constant<bool, M::effects::friction>,
                                        std::integral_constant<bool, M::effects::damping>,
-                                       std::integral_constant<bool, M::effects::radius_growth>>>
-    : std::true_type {};
+                                       std::integral_constant<bool, M::effects::radius_growth>>> : std::true_type {};
 
 template <class M, class = void>
 struct has_normal_history_size : std::false_type {};
 template <class M>
-struct has_normal_history_size<M, std::void_t<std::integral_constant<int, M::normal_history_size>>>
-    : std::true_type {};
+struct has_normal_history_size<M, std::void_t<std::integral_constant<int, M::normal_history_size>>> : std::true_type {};
 
 template <class M, class = void>
 struct has_history_size : std::false_type {};
@@ -66,8 +64,8 @@ struct has_history_size<M, std::void_t<std::integral_constant<int, M::history_si
 template <class M, class = void>
 struct history_sizes_fit : std::true_type {};
 template <class M>
-struct history_sizes_fit<M, std::enable_if_t<has_normal_history_size<M>::value && has_history_size<M>::value &&
-                                             has_effect_flags<M>::value>>
+struct history_sizes_fit<
+    M, std::enable_if_t<has_normal_history_size<M>::value && has_history_size<M>::value && has_effect_flags<M>::value>>
     : std::integral_constant<bool, (M::normal_history_size >= 0 &&
                                     M::history_size >= M::normal_history_size + (M::effects::friction ? 3 : 0))> {};
 
@@ -84,8 +82,8 @@ struct normal_result {
 };
 template <class M, class T, class Device>
 struct normal_result<M, T, Device,
-                     std::void_t<decltype(std::declval<const M&>().normal(std::declval<const ContactGeometry<T>&>(),
-                                                                          std::declval<const HistoryRow<T, Device>&>()))>> {
+                     std::void_t<decltype(std::declval<const M&>().normal(
+                         std::declval<const ContactGeometry<T>&>(), std::declval<const HistoryRow<T, Device>&>()))>> {
   using type = std::remove_cv_t<std::remove_reference_t<decltype(std::declval<const M&>().normal(
       std::declval<const ContactGeometry<T>&>(), std::declval<const HistoryRow<T, Device>&>()))>>;
 };
@@ -105,7 +103,8 @@ struct scalar_type_matches<M, T, std::void_t<typename M::scalar_type>> : std::is
 template <class M, class = void>
 struct uses_side_order : std::false_type {};
 template <class M>
-struct uses_side_order<M, std::void_t<decltype(M::uses_side_order)>> : std::integral_constant<bool, M::uses_side_order> {};
+struct uses_side_order<M, std::void_t<decltype(M::uses_side_order)>>
+    : std::integral_constant<bool, M::uses_side_order> {};
 
 // The model's particle update after each pass (MDR: radius growth), if it has one.
 template <class M, class = void>
@@ -122,8 +121,9 @@ struct has_guard_hits<M, std::void_t<decltype(std::declval<const M&>().guard_hit
 template <class M, class = void>
 struct has_growth_state : std::false_type {};
 template <class M>
-struct has_growth_state<M, std::void_t<decltype(std::declval<const M&>().growth.volume),
-                                       decltype(std::declval<const M&>().growth.bound())>> : std::true_type {};
+struct has_growth_state<
+    M, std::void_t<decltype(std::declval<const M&>().growth.volume), decltype(std::declval<const M&>().growth.bound())>>
+    : std::true_type {};
 
 // Models with per-particle sums of their own declare begin_deterministic_pass(pairs, walls) and
 // end_deterministic_pass(p, pairs, pair_incidence, wall_incidence) (models/mdr/mdr_model.hpp).
@@ -138,12 +138,11 @@ struct has_deterministic_hooks<M, std::void_t<decltype(std::declval<M&>().begin_
 // True when Model has every required member for particles of scalar T on Device.
 template <class Model, class T, class Device>
 struct is_contact_model
-    : std::integral_constant<bool, detail::has_effects<Model>::value && detail::has_effect_flags<Model>::value &&
-                                       detail::has_normal_history_size<Model>::value &&
-                                       detail::has_history_size<Model>::value &&
-                                       detail::history_sizes_fit<Model>::value && detail::has_nmat<Model>::value &&
-                                       detail::scalar_type_matches<Model, T>::value &&
-                                       detail::has_normal<Model, T, Device>::value> {};
+    : std::integral_constant<
+          bool, detail::has_effects<Model>::value && detail::has_effect_flags<Model>::value &&
+                    detail::has_normal_history_size<Model>::value && detail::has_history_size<Model>::value &&
+                    detail::history_sizes_fit<Model>::value && detail::has_nmat<Model>::value &&
+                    detail::scalar_type_matches<Model, T>::value && detail::has_normal<Model, T, Device>::value> {};
 
 // The kernels' compile-time check: one message per missing or ill-formed member.
 template <class Model, class T, class Device>

@@ -51,13 +51,17 @@ KOKKOS_FORCEINLINE_FUNCTION Vec3<T> tangential_spring_force(const NormalForce<T>
       xi = Vec3<T>();
     }
   }
-  h(0) = orient * xi.x; h(1) = orient * xi.y; h(2) = orient * xi.z;
+  h(0) = orient * xi.x;
+  h(1) = orient * xi.y;
+  h(2) = orient * xi.z;
   return ft;
 }
 
 template <class Row>
 KOKKOS_INLINE_FUNCTION void reset_tangential(const Row& h) {
-  h(0) = 0; h(1) = 0; h(2) = 0;
+  h(0) = 0;
+  h(1) = 0;
+  h(2) = 0;
 }
 
 }  // namespace epac

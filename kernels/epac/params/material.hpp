@@ -10,14 +10,14 @@ namespace epac {
 
 struct Material {
   std::string name = "material";  // host
-  double youngs_modulus = 0;   // E [Pa]
-  double poisson_ratio = 0.3;  // nu, in (-1, 0.5)
-  double density = 0;          // [kg/m^3]
-  double restitution = 1;      // e0 in [0, 1]; 1 = no damping
-  double friction = 0;         // sliding friction coefficient mu >= 0; 0 = no friction
-  double surface_energy = 0;   // Gamma (Nan) = Delta gamma (MDR) [J/m^2]; 0 = no adhesion
+  double youngs_modulus = 0;      // E [Pa]
+  double poisson_ratio = 0.3;     // nu, in (-1, 0.5)
+  double density = 0;             // [kg/m^3]
+  double restitution = 1;         // e0 in [0, 1]; 1 = no damping
+  double friction = 0;            // sliding friction coefficient mu >= 0; 0 = no friction
+  double surface_energy = 0;      // Gamma (Nan) = Delta gamma (MDR) [J/m^2]; 0 = no adhesion
   double yield_stress = std::numeric_limits<double>::infinity();  // Y or sigma_y [Pa]; inf = no yield
-  bool rigid = false;          // rigid body (walls): contributes no compliance
+  bool rigid = false;                                             // rigid body (walls): contributes no compliance
   // Rigid only: its own restitution, friction and surface energy for its contacts (default: a
   // rigid wall takes the particle's). E.g. a die wall with less friction than the powder.
   bool own_surface_properties = false;
@@ -31,10 +31,9 @@ struct Material {
     require_range(p + "poisson_ratio", poisson_ratio, -1.0, Bound::open, 0.5, Bound::open);
     if (!rigid) require_positive(p + "density", density);
     require_range(p + "restitution", restitution, 0.0, Bound::closed, 1.0, Bound::closed);
-    require_range(p + "friction", friction, 0.0, Bound::closed, std::numeric_limits<double>::infinity(),
+    require_range(p + "friction", friction, 0.0, Bound::closed, std::numeric_limits<double>::infinity(), Bound::open);
+    require_range(p + "surface_energy", surface_energy, 0.0, Bound::closed, std::numeric_limits<double>::infinity(),
                   Bound::open);
-    require_range(p + "surface_energy", surface_energy, 0.0, Bound::closed,
-                  std::numeric_limits<double>::infinity(), Bound::open);
     require_positive(p + "yield_stress", yield_stress, /*allow_inf=*/true);
   }
 };
@@ -48,9 +47,12 @@ struct PairProperties {
 };
 
 inline PairProperties pair_properties(const Material& a, const Material& b) {
-  auto cE = [](const Material& m) { return m.rigid ? 0.0 : (1 - m.poisson_ratio * m.poisson_ratio) / m.youngs_modulus; };
+  auto cE = [](const Material& m) {
+    return m.rigid ? 0.0 : (1 - m.poisson_ratio * m.poisson_ratio) / m.youngs_modulus;
+  };
   auto cG = [](const Material& m) { return m.rigid ? 0.0 : (2 - m.poisson_ratio) / m.shear_modulus(); };
-  if (a.rigid && b.rigid) throw ParameterError("pair '" + a.name + "'-'" + b.name + "': two rigid bodies cannot be in contact");  // host
+  if (a.rigid && b.rigid)
+    throw ParameterError("pair '" + a.name + "'-'" + b.name + "': two rigid bodies cannot be in contact");  // host
   PairProperties p;
   p.E_star = 1.0 / (cE(a) + cE(b));
   p.G_star = 1.0 / (cG(a) + cG(b));

@@ -45,7 +45,8 @@ inline double hertz_restitution_for(double c) {
       const double t = x / (x - xn);
       return -(v + t * (vn - v));
     }
-    x = xn; v = vn;
+    x = xn;
+    v = vn;
   }
   return 0.0;
 }

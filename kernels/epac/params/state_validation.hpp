@@ -22,7 +22,7 @@ namespace epac {
 namespace state_detail {
 
 [[noreturn]] inline void fail(const std::string& what, int index, const std::string& value,  // host
-                              const std::string& range) {  // host
+                              const std::string& range) {                                    // host
   std::ostringstream s;
   s << what << "[" << index << "] = " << value << " is outside the valid range " << range;
   throw ParameterError(s.str());  // host

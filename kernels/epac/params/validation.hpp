@@ -23,24 +23,22 @@ inline void require_range(const std::string& name, double value, double lo, Boun
   const bool inf_ok = allow_inf && std::isinf(value) && value > 0;
   bool ok = !is_nan && (std::isfinite(value) || inf_ok);
   if (ok && !inf_ok) {
-    ok = (lo_kind == Bound::open ? value > lo : value >= lo) &&
-         (hi_kind == Bound::open ? value < hi : value <= hi);
+    ok = (lo_kind == Bound::open ? value > lo : value >= lo) && (hi_kind == Bound::open ? value < hi : value <= hi);
   }
   if (!ok) {
     std::ostringstream s;
-    s << name << " = " << value << " is outside the valid range " << (lo_kind == Bound::open ? "(" : "[")
-      << lo << ", ";
-    if (std::isinf(hi)) s << "inf" << (allow_inf ? "]" : ")");
-    else s << hi << (hi_kind == Bound::open ? ")" : "]");
+    s << name << " = " << value << " is outside the valid range " << (lo_kind == Bound::open ? "(" : "[") << lo << ", ";
+    if (std::isinf(hi))
+      s << "inf" << (allow_inf ? "]" : ")");
+    else
+      s << hi << (hi_kind == Bound::open ? ")" : "]");
     throw ParameterError(s.str());  // host
   }
 }
 
 inline void require_positive(const std::string& name, double value, bool allow_inf = false) {  // host
-  require_range(name, value, 0.0, Bound::open, std::numeric_limits<double>::infinity(), Bound::open,
-                allow_inf);
+  require_range(name, value, 0.0, Bound::open, std::numeric_limits<double>::infinity(), Bound::open, allow_inf);
 }
-
 
 // Requires a constant derived on the host (in double) to be usable in the kernels' scalar type T:
 // finite, and 0 or of magnitude within T's normal range [numeric_limits<T>::min(), max()]. In float a
@@ -56,7 +54,9 @@ void require_representable(const std::string& name, double value, const std::str
   if (std::isfinite(value) && (a == 0.0 || (a >= lo && a <= hi))) return;
   std::ostringstream s;
   s << name << " = " << value << " (derived from " << from << ") is outside the range representable in "
-    << (sizeof(T) == sizeof(float) ? "float" : sizeof(T) == sizeof(double) ? "double" : "the scalar type")
+    << (sizeof(T) == sizeof(float)    ? "float"
+        : sizeof(T) == sizeof(double) ? "double"
+                                      : "the scalar type")
     << ": |value| must be 0 or in [" << lo << ", " << hi << "]";
   throw ParameterError(s.str());  // host
 }

@@ -45,8 +45,8 @@ struct ContactHistory {
 // in the kernels, and a managed View copy would check its reference count each time.
 template <class T, class Device>
 struct HistoryRow {
-  T* first = nullptr;       // field `offset` of this row
-  std::size_t stride = 0;   // distance between fields (the view's column stride)
+  T* first = nullptr;      // field `offset` of this row
+  std::size_t stride = 0;  // distance between fields (the view's column stride)
   HistoryRow() = default;
   KOKKOS_FORCEINLINE_FUNCTION HistoryRow(const typename ContactHistory<T, Device>::data_view& data, int row, int offset)
       : first(data.data() + row + static_cast<std::size_t>(offset) * data.stride(1)), stride(data.stride(1)) {}

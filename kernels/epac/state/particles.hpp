@@ -23,16 +23,22 @@ struct Particles {
   scalar_view radius;         // current (apparent) radius R; equals R0 unless MDR grows it
   Kokkos::View<int*, Device> material;
   Kokkos::View<std::int64_t*, Device> gid;  // global id: history keys and MDR side order
-  PeriodicBox<T> box;  // periodic axes of the contact geometry (default: none)
+  PeriodicBox<T> box;                       // periodic axes of the contact geometry (default: none)
 
   Particles() = default;
   explicit Particles(int count, const std::string& label = "particles")  // host
       : n(count),
-        x(label + ".x", count), v(label + ".v", count), omega(label + ".omega", count),
-        force(label + ".force", count), torque(label + ".torque", count),
-        mass(label + ".mass", count), inertia(label + ".inertia", count),
-        radius0(label + ".radius0", count), radius(label + ".radius", count),
-        material(label + ".material", count), gid(label + ".gid", count) {}
+        x(label + ".x", count),
+        v(label + ".v", count),
+        omega(label + ".omega", count),
+        force(label + ".force", count),
+        torque(label + ".torque", count),
+        mass(label + ".mass", count),
+        inertia(label + ".inertia", count),
+        radius0(label + ".radius0", count),
+        radius(label + ".radius", count),
+        material(label + ".material", count),
+        gid(label + ".gid", count) {}
 
   // Bytes held per particle (reported by the driver).
   static constexpr std::size_t bytes_per_particle() {

@@ -29,8 +29,10 @@ struct PeriodicBox {
   // by less than one box length in one drift).
   KOKKOS_INLINE_FUNCTION static T wrap(T x, T lo_d, T L) {
     if (!(L > T(0))) return x;
-    if (x >= lo_d + L) x -= L;
-    else if (x < lo_d) x += L;
+    if (x >= lo_d + L)
+      x -= L;
+    else if (x < lo_d)
+      x += L;
     // far outside (a particle that moved more than a box length): fold exactly
     if (x < lo_d || x >= lo_d + L) {
       x = x - L * math::floor((x - lo_d) / L);

@@ -16,8 +16,11 @@ struct Walls {
 
   Walls() = default;
   explicit Walls(int count, const std::string& label = "walls")  // host
-      : n(count), point(label + ".point", count), normal(label + ".normal", count),
-        velocity(label + ".velocity", count), material(label + ".material", count) {}
+      : n(count),
+        point(label + ".point", count),
+        normal(label + ".normal", count),
+        velocity(label + ".velocity", count),
+        material(label + ".material", count) {}
 };
 
 // Moves every wall by its velocity over dt (prescribed-displacement driving).
@@ -26,9 +29,10 @@ void advance_walls(const Walls<T, Device>& w, T dt) {
   using exec = typename Device::execution_space;
   auto p = w.point;
   auto v = w.velocity;
-  Kokkos::parallel_for("epac::advance_walls", Kokkos::RangePolicy<exec>(0, w.n), KOKKOS_LAMBDA(int k) {
-    for (int d = 0; d < 3; ++d) p(k, d) += dt * v(k, d);
-  });
+  Kokkos::parallel_for(
+      "epac::advance_walls", Kokkos::RangePolicy<exec>(0, w.n), KOKKOS_LAMBDA(int k) {
+        for (int d = 0; d < 3; ++d) p(k, d) += dt * v(k, d);
+      });
 }
 
 }  // namespace epac

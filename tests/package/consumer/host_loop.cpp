@@ -31,12 +31,20 @@ void find_contacts(const Particles& p, const Walls& w, double skin, epac::Contac
     for (int j = i + 1; j < p.n; ++j) {
       double d2 = 0;
       for (int k = 0; k < 3; ++k) d2 += (x(i, k) - x(j, k)) * (x(i, k) - x(j, k));
-      if (std::sqrt(d2) < R(i) + R(j) + skin) { hp.first(np) = i; hp.second(np) = j; ++np; }
+      if (std::sqrt(d2) < R(i) + R(j) + skin) {
+        hp.first(np) = i;
+        hp.second(np) = j;
+        ++np;
+      }
     }
     for (int k = 0; k < w.n; ++k) {
       double h = 0;  // height above the wall plane
       for (int d = 0; d < 3; ++d) h += (x(i, d) - wp(k, d)) * wn(k, d);
-      if (h < R(i) + skin) { hw.first(nw) = i; hw.second(nw) = k; ++nw; }
+      if (h < R(i) + skin) {
+        hw.first(nw) = i;
+        hw.second(nw) = k;
+        ++nw;
+      }
     }
   }
   pairs = epac::ContactList<>(np);
@@ -67,23 +75,32 @@ int main(int argc, char* argv[]) {
     const double x0[n][3] = {{-1.001e-3, 5e-3, 0}, {1.001e-3, 5e-3, 0}, {0, 1.001e-3, 0}};
     const double v0[n][3] = {{0.1, 0, 0}, {-0.1, 0, 0}, {0.05, -0.1, 0}};
     for (int i = 0; i < n; ++i) {
-      for (int d = 0; d < 3; ++d) { x(i, d) = x0[i][d]; v(i, d) = v0[i][d]; }
+      for (int d = 0; d < 3; ++d) {
+        x(i, d) = x0[i][d];
+        v(i, d) = v0[i][d];
+      }
       gid(i) = 100 + i;  // global ids: unique and >= 0 (they key the contact history)
     }
-    Kokkos::deep_copy(p.x, x); Kokkos::deep_copy(p.v, v); Kokkos::deep_copy(p.gid, gid);
+    Kokkos::deep_copy(p.x, x);
+    Kokkos::deep_copy(p.v, v);
+    Kokkos::deep_copy(p.gid, gid);
   }
   // Every field a law reads must be set: radius (current) and radius0 (initial), mass, inertia
   // (solid sphere 2/5 m R^2), material (an index into the list given to create).
-  Kokkos::deep_copy(p.radius, R); Kokkos::deep_copy(p.radius0, R);
-  Kokkos::deep_copy(p.mass, mass); Kokkos::deep_copy(p.inertia, 0.4 * mass * R * R);
+  Kokkos::deep_copy(p.radius, R);
+  Kokkos::deep_copy(p.radius0, R);
+  Kokkos::deep_copy(p.mass, mass);
+  Kokkos::deep_copy(p.inertia, 0.4 * mass * R * R);
   Kokkos::deep_copy(p.material, 0);
 
   Walls walls(1);  // the floor y = 0; the normal is a unit vector pointing to the particles
   {
     auto nrm = Kokkos::create_mirror_view(walls.normal);
     auto mat = Kokkos::create_mirror_view(walls.material);
-    nrm(0, 1) = 1.0; mat(0) = 1;
-    Kokkos::deep_copy(walls.normal, nrm); Kokkos::deep_copy(walls.material, mat);
+    nrm(0, 1) = 1.0;
+    mat(0) = 1;
+    Kokkos::deep_copy(walls.normal, nrm);
+    Kokkos::deep_copy(walls.material, mat);
   }
   epac::validate(p, walls, model);  // host: material indices, radii, masses, ids, unit normals
 
@@ -104,13 +121,14 @@ int main(int argc, char* argv[]) {
     epac::zero_forces(p);
     epac::compute_pair_forces(model, p, pairs, pair_history, dt);  // adds into p.force / p.torque
     epac::compute_wall_forces(model, p, walls, wall_contacts, wall_history, dt);
-    Kokkos::parallel_for("integrate", n, KOKKOS_LAMBDA(int i) {  // the host's integrator (semi-implicit Euler)
-      for (int d = 0; d < 3; ++d) {
-        p.v(i, d) += dt * p.force(i, d) / p.mass(i);
-        p.x(i, d) += dt * p.v(i, d);
-        p.omega(i, d) += dt * p.torque(i, d) / p.inertia(i);
-      }
-    });
+    Kokkos::parallel_for(
+        "integrate", n, KOKKOS_LAMBDA(int i) {  // the host's integrator (semi-implicit Euler)
+          for (int d = 0; d < 3; ++d) {
+            p.v(i, d) += dt * p.force(i, d) / p.mass(i);
+            p.x(i, d) += dt * p.v(i, d);
+            p.omega(i, d) += dt * p.torque(i, d) / p.inertia(i);
+          }
+        });
   }
   auto v = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.v);
   auto w = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.omega);

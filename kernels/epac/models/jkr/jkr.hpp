@@ -39,8 +39,7 @@ struct Jkr {
   Kokkos::View<JkrPair<T>*, Device> pairs;
   int nmat = 0;
 
-  KOKKOS_INLINE_FUNCTION NormalForce<T> normal(const ContactGeometry<T>& g,
-                                               const HistoryRow<T, Device>& row) const {
+  KOKKOS_INLINE_FUNCTION NormalForce<T> normal(const ContactGeometry<T>& g, const HistoryRow<T, Device>& row) const {
     NormalForce<T> r;
     const JkrPair<T> p = pairs(g.pair);
     const T gamma = Eff::adhesion ? p.surface_energy : T(0);
@@ -52,7 +51,7 @@ struct Jkr {
         cs = T(1);
       }
       const JkrScales<T> s = jkr_scales_from(p.a0_coeff, gamma, g.R_eff);
-      const T d = g.delta / s.delta_s;  // delta_s > 0
+      const T d = g.delta / s.delta_s;                // delta_s > 0
       if (!(d >= jkr_critical_overlap_ratio<T>())) {  // breaks at the critical overlap
         row(0) = T(0);
         return r;
@@ -69,8 +68,14 @@ struct Jkr {
     }
     r.active = true;
     r.k_n = T(2) * p.E_star * a;
-    if (Eff::damping) { r.damping = p.c_damp; r.damping_t = p.c_damp; }
-    if (Eff::friction) { r.k_t = p.kt_over_kn * r.k_n; r.mu = p.mu; }
+    if (Eff::damping) {
+      r.damping = p.c_damp;
+      r.damping_t = p.c_damp;
+    }
+    if (Eff::friction) {
+      r.k_t = p.kt_over_kn * r.k_n;
+      r.mu = p.mu;
+    }
     return r;
   }
 
@@ -85,7 +90,10 @@ struct Jkr {
       for (int b = 0; b < m.nmat; ++b) {
         const Material& A = materials[a];
         const Material& B = materials[b];
-        if (A.rigid && B.rigid) { h(a * m.nmat + b) = {T(0), T(0), T(0), T(0), T(0), T(0)}; continue; }
+        if (A.rigid && B.rigid) {
+          h(a * m.nmat + b) = {T(0), T(0), T(0), T(0), T(0), T(0)};
+          continue;
+        }
         const PairProperties pp = pair_properties(A, B);
         const std::string from = "the moduli and surface energies of '" + A.name + "' and '" + B.name + "'";  // host
         require_representable<T>("hertz_jkr: E_star", pp.E_star, from);
@@ -93,8 +101,11 @@ struct Jkr {
         require_representable<T>("hertz_jkr: kt_over_kn", 4.0 * pp.G_star / pp.E_star, from);
         require_representable<T>("hertz_jkr: cbrt(2 pi gamma / E_star)",
                                  std::cbrt(2.0 * constants<double>::pi * pp.surface_energy / pp.E_star), from);
-        h(a * m.nmat + b) = {T(pp.E_star), T(pp.surface_energy), T(4.0 * pp.G_star / pp.E_star),
-                             T(hertz_damping_coefficient(pp.restitution)), T(pp.friction),
+        h(a * m.nmat + b) = {T(pp.E_star),
+                             T(pp.surface_energy),
+                             T(4.0 * pp.G_star / pp.E_star),
+                             T(hertz_damping_coefficient(pp.restitution)),
+                             T(pp.friction),
                              T(std::cbrt(2.0 * constants<double>::pi * pp.surface_energy / pp.E_star))};
       }
     Kokkos::deep_copy(m.pairs, h);

@@ -102,12 +102,12 @@ struct Mdr {
   // MdrOptions::delta_max: 1 for MDR (19), delta_max shifted by R - R_o; 0 for the authors' running
   // maximum of delta (the sides then see no shift)
   T growth_in_max = T(1);
-  bool authors_damping = false;   // MdrOptions::damping == authors (pc.c_damp is then beta, mdr_pair_constants)
-  bool authors_friction = false;  // MdrOptions::friction == authors
-  T k_t_authors = T(0);           // MdrOptions::tangential_stiffness
-  T adhesive_radius_factor = T(1);  // MdrOptions::adhesive_radius: 1 (paper) or 0.99 (authors)
+  bool authors_damping = false;          // MdrOptions::damping == authors (pc.c_damp is then beta, mdr_pair_constants)
+  bool authors_friction = false;         // MdrOptions::friction == authors
+  T k_t_authors = T(0);                  // MdrOptions::tangential_stiffness
+  T adhesive_radius_factor = T(1);       // MdrOptions::adhesive_radius: 1 (paper) or 0.99 (authors)
   bool release_at_zero_overlap = false;  // MdrOptions::release == zero_overlap
-  MdrGrowthState<T, Device> growth;  // bound by bind() when Eff::radius_growth
+  MdrGrowthState<T, Device> growth;      // bound by bind() when Eff::radius_growth
   // Deterministic mode: the growth terms (columns of growth.sums) per contact side, enabled by
   // begin_deterministic_pass; side 0 of a pair is the particle with the smaller global id.
   ContactSideSums<T, 3, Device> growth_terms;
@@ -131,8 +131,7 @@ struct Mdr {
     }
     return st;
   }
-  static KOKKOS_INLINE_FUNCTION void store_side(const HistoryRow<T, Device>& row, int s,
-                                                const MdrSideState<T>& st) {
+  static KOKKOS_INLINE_FUNCTION void store_side(const HistoryRow<T, Device>& row, int s, const MdrSideState<T>& st) {
     const int b = side_base(s);
     if (Eff::plasticity) {
       row(b + SideField::delta_o_max) = st.delta_o_max;
@@ -173,8 +172,10 @@ struct Mdr {
     // geometric split as its first guess), a wall's side directly
     e.before[0] = e.st[0];
     e.before[1] = e.st[1];
-    if (e.is_pair) balance_pair_sides<Write>(g, row, pc, e);
-    else wall_side(pc, e);
+    if (e.is_pair)
+      balance_pair_sides<Write>(g, row, pc, e);
+    else
+      wall_side(pc, e);
 
     const SideSums sum = finish_sides<Write>(g, row, pc, grows, e, o);
     // every side separated at a gap this step: released now, not at the next evaluation
@@ -208,11 +209,12 @@ struct Mdr {
     const bool grows = Eff::radius_growth && growth.bound();
     T critical = T(0);
     for (int s = 0; s < e.nsides; ++s) {
-      const bool side_b = (s == 0) == e.swap;  // as in evaluate
+      const bool side_b = (s == 0) == e.swap;        // as in evaluate
       const MdrSideState<T> st = load_side(row, s);  // reads delta_o,max, yielded, c_A
       const T grown = grows ? growth_in_max * (e.Rs[s] - growth.radius0(e.part[s])) : T(0);
       const T gamma_s = Eff::adhesion ? (side_b ? pc.gamma_b : pc.gamma_a) : T(0);
-      critical += mdr_side_critical_overlap<Eff::plasticity>(side_b ? pc.side_b : pc.side_a, gamma_s, e.Rs[s], grown, st);
+      critical +=
+          mdr_side_critical_overlap<Eff::plasticity>(side_b ? pc.side_b : pc.side_a, gamma_s, e.Rs[s], grown, st);
     }
     return critical;
   }
@@ -460,8 +462,7 @@ struct Mdr {
     const bool plastic_pair = Eff::plasticity && (e.st[0].yielded != T(0) || e.st[1].yielded != T(0));
     if (Eff::plasticity && plastic_pair) {
       const T delta_last = row(PairField::split_delta);
-      if (delta_last != T(0))
-        guess = row(PairField::split_d0) + row(PairField::split_slope) * (g.delta - delta_last);
+      if (delta_last != T(0)) guess = row(PairField::split_d0) + row(PairField::split_slope) * (g.delta - delta_last);
     }
     return guess;
   }
@@ -477,7 +478,8 @@ struct Mdr {
       const T k0 = ps.lambda[0] * e.res[0].stiffness, k1 = ps.lambda[1] * e.res[1].stiffness;
       const T w = (k0 > T(0) && k1 > T(0)) ? k1 / (k0 + k1) : T(0.5);
       row(PairField::split_d0) = d0;
-      row(PairField::split_delta) = g.delta != T(0) ? g.delta : T(1e-30) * (e.Rs[0] + e.Rs[1]);  // 0 marks "no last pass"
+      row(PairField::split_delta) =
+          g.delta != T(0) ? g.delta : T(1e-30) * (e.Rs[0] + e.Rs[1]);  // 0 marks "no last pass"
       row(PairField::split_slope) = w;
     }
   }
@@ -520,8 +522,8 @@ struct Mdr {
 
   // The side's growth terms (deterministic mode: its slot, s in global-id order) and history.
   KOKKOS_FORCEINLINE_FUNCTION void commit_side(const ContactGeometry<T>& g, const HistoryRow<T, Device>& row,
-                                               const MdrPairConstants<T>& pc, bool grows,
-                                               detail::MdrEvaluation<T>& e, int s) const {
+                                               const MdrPairConstants<T>& pc, bool grows, detail::MdrEvaluation<T>& e,
+                                               int s) const {
     const MdrSideResult<T>& r = e.res[s];
     MdrSideState<T>& st = e.st[s];
     if (grows) {
@@ -532,8 +534,8 @@ struct Mdr {
         mdr_growth_add_side(growth, growth_terms.access(e.is_pair, g.contact, s), e.part[s], e.R0s[s], c.inv_3kappa,
                             r.F, e.dside[s], e.Rs[s], plastic_loading, r.plastic, st.delta_o_prev, st.eps_prev);
       else
-        mdr_growth_add_side(growth, growth.sums.scatter.access(), e.part[s], e.R0s[s], c.inv_3kappa, r.F,
-                            e.dside[s], e.Rs[s], plastic_loading, r.plastic, st.delta_o_prev, st.eps_prev);
+        mdr_growth_add_side(growth, growth.sums.scatter.access(), e.part[s], e.R0s[s], c.inv_3kappa, r.F, e.dside[s],
+                            e.Rs[s], plastic_loading, r.plastic, st.delta_o_prev, st.eps_prev);
     }
     store_changed(row, s, e.before[s], st, r.plastic);
   }

@@ -155,18 +155,18 @@ struct MdrOptions {
 // One particle's constants as a side of a contact (a particle against a rigid flat).
 template <class T>
 struct MdrSideConstants {
-  T E_eff;     // E/(1 - nu^2): the side's plane strain modulus against a rigid flat
-  T G;         // shear modulus, MDR (34)
-  T nu;        // Poisson ratio, MDR (34)
-  T kappa;     // bulk modulus, MDR (38)
-  T Y;         // yield stress, MDR (16) and (21); +inf: never yields
-  T x_yield;   // delta_Y / R, the root of the yield equation (41) (see MdrYieldOnset); +inf: never
+  T E_eff;    // E/(1 - nu^2): the side's plane strain modulus against a rigid flat
+  T G;        // shear modulus, MDR (34)
+  T nu;       // Poisson ratio, MDR (34)
+  T kappa;    // bulk modulus, MDR (38)
+  T Y;        // yield stress, MDR (16) and (21); +inf: never yields
+  T x_yield;  // delta_Y / R, the root of the yield equation (41) (see MdrYieldOnset); +inf: never
   // Precomputed for the hot path (mdr_side_force); all depend on the material only.
-  T Y_hard;        // 1.75 Y: p_Y = Y + Y_hard exp(-4.4 delta_max/R), MDR (16) with (21)
-  T four_over_E;   // 4 / E_eff: A = (4 p_Y / E_eff) a_max, MDR (28)
-  T cA_over_R2;    // c_A / R^2 = pi (x_y^2 - x_y) at the switch, MDR (43); 0 if never yields
-  T r_rho, r_z;    // E_eff (nu-1)/(2G) and E_eff/(4G): delta_R/(A/2) of MDR (34), see mdr_plastic_shape
-  T inv_3kappa;    // 1 / (3 kappa), MDR (38)
+  T Y_hard;       // 1.75 Y: p_Y = Y + Y_hard exp(-4.4 delta_max/R), MDR (16) with (21)
+  T four_over_E;  // 4 / E_eff: A = (4 p_Y / E_eff) a_max, MDR (28)
+  T cA_over_R2;   // c_A / R^2 = pi (x_y^2 - x_y) at the switch, MDR (43); 0 if never yields
+  T r_rho, r_z;   // E_eff (nu-1)/(2G) and E_eff/(4G): delta_R/(A/2) of MDR (34), see mdr_plastic_shape
+  T inv_3kappa;   // 1 / (3 kappa), MDR (38)
 };
 
 // Fills the precomputed fields of c from its base fields (host).
@@ -198,7 +198,6 @@ struct MdrPairConstants {
 
 // --- yield onset, host --------------------------------------------------------------------------
 
-
 // delta_Y / R for a side with plane strain modulus E_eff and yield stress Y: the root of the
 // yield equation, solved by bracketed_newton_host in s = sqrt(delta_Y / R). Depends on E_eff/Y only.
 // Returns +inf when the side never yields (Y infinite, or the elastic pressure never reaches p_Y
@@ -228,7 +227,7 @@ inline double mdr_yield_ratio(double E_eff, double Y, MdrYieldOnset onset) {
       const double th = 2.0 * std::asin(0.5 * s);
       const double br = mdr_ellipse_bracket(th);
       const double dth = 1.0 / std::sqrt(std::max(1.0 - 0.25 * s * s, 1e-300));  // d theta / ds
-      const double dbr = 2.0 * std::sin(th) * std::sin(th) * dth;               // d bracket / ds
+      const double dbr = 2.0 * std::sin(th) * std::sin(th) * dth;                // d bracket / ds
       fv = 2.0 * r / pi * br / (s * s) - hardening(s);
       df = 2.0 * r / pi * (dbr / (s * s) - 2.0 * br / (s * s * s)) - dhardening(s);
     };
@@ -262,7 +261,8 @@ MdrSideConstants<T> mdr_side_constants(const Material& m, MdrYieldOnset onset) {
   mdr_fill_derived(c);
   // every constant the kernels use must be a normal number of T (float: moduli and yield stresses
   // between about 1e-38 and 3e38, after the factors below)
-  const std::string n = "mdr: material '" + m.name + "': ", from = "its modulus, Poisson ratio and yield stress";  // host
+  const std::string n = "mdr: material '" + m.name + "': ",
+                    from = "its modulus, Poisson ratio and yield stress";  // host
   const double G = m.shear_modulus(), kappa = m.youngs_modulus / (3.0 * (1.0 - 2.0 * nu));
   require_representable<T>(n + "E_eff", E_eff, from);
   require_representable<T>(n + "G", G, from);
@@ -290,7 +290,7 @@ MdrPairConstants<T> mdr_pair_constants(const Material& a, const Material& b,
   p.kt_over_kn = T(4.0 * pp.G_star / pp.E_star);
   // MdrDamping::authors: beta = -ln e / sqrt(ln^2 e + pi^2), the linear-spring ratio of Nan (26)
   p.c_damp = T(damping == MdrDamping::authors ? linear_damping_ratio(pp.restitution)
-                                               : hertz_damping_coefficient(pp.restitution));
+                                              : hertz_damping_coefficient(pp.restitution));
   p.mu = T(pp.friction);
   p.gamma = T(pp.surface_energy);
   p.side_a = a.rigid ? MdrSideConstants<T>{} : mdr_side_constants<T>(a, onset);
@@ -300,12 +300,14 @@ MdrPairConstants<T> mdr_pair_constants(const Material& a, const Material& b,
   const bool full = share == MdrSurfaceEnergyShare::each_side_full;
   p.gamma_a = a.rigid ? T(0) : T(full ? pp.surface_energy : pp.surface_energy * pp.E_star / double(p.side_a.E_eff));
   p.gamma_b = b.rigid ? T(0) : T(full ? pp.surface_energy : pp.surface_energy * pp.E_star / double(p.side_b.E_eff));
-  const std::string n = "mdr: pair '" + a.name + "'-'" + b.name + "': ";  // host
+  const std::string n = "mdr: pair '" + a.name + "'-'" + b.name + "': ";      // host
   const std::string from = "the two materials' moduli and surface energies";  // host
   require_representable<T>(n + "E_star", pp.E_star, from);
   require_representable<T>(n + "surface_energy", pp.surface_energy, from);
-  if (!a.rigid) require_representable<T>(n + "side a surface energy", pp.surface_energy * pp.E_star / double(p.side_a.E_eff), from);
-  if (!b.rigid) require_representable<T>(n + "side b surface energy", pp.surface_energy * pp.E_star / double(p.side_b.E_eff), from);
+  if (!a.rigid)
+    require_representable<T>(n + "side a surface energy", pp.surface_energy * pp.E_star / double(p.side_a.E_eff), from);
+  if (!b.rigid)
+    require_representable<T>(n + "side b surface energy", pp.surface_energy * pp.E_star / double(p.side_b.E_eff), from);
   return p;
 }
 

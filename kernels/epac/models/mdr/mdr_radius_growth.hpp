@@ -57,8 +57,8 @@ struct MdrGrowthState {
   using sum_view = Kokkos::View<T*, Kokkos::LayoutLeft, Device>;
   enum : int { kEps = 0, kNumerator = 1, kDenominator = 2 };
   ParticleSum<T* [3], Device> sums;
-  sum_view eps_sum;  // sum of the particle's Christoffersen terms (38): column kEps
-  sum_view numerator, denominator;  // sums of (37): columns kNumerator, kDenominator
+  sum_view eps_sum;                       // sum of the particle's Christoffersen terms (38): column kEps
+  sum_view numerator, denominator;        // sums of (37): columns kNumerator, kDenominator
   Kokkos::View<int*, Device> guard_hits;  // cumulative counts, MdrGrowthGuard
   MdrGrowthRule rule = MdrGrowthRule::plastic_loading;
   T radius_cap = T(1.5), denominator_floor = T(0.05), volume_floor = T(0.1);
@@ -80,11 +80,9 @@ struct MdrGrowthState {
     guard_hits = Kokkos::View<int*, Device>(label + ".guard_hits", kMdrGuardCount);
     auto V = volume;
     auto R0 = radius0;
-    Kokkos::parallel_for("epac::mdr_init_volume",
-                         Kokkos::RangePolicy<typename Device::execution_space>(0, n),
-                         KOKKOS_LAMBDA(int p) {
-                           V(p) = T(4) / T(3) * constants<T>::pi * R0(p) * R0(p) * R0(p);
-                         });
+    Kokkos::parallel_for(
+        "epac::mdr_init_volume", Kokkos::RangePolicy<typename Device::execution_space>(0, n),
+        KOKKOS_LAMBDA(int p) { V(p) = T(4) / T(3) * constants<T>::pi * R0(p) * R0(p) * R0(p); });
   }
 };
 
@@ -98,13 +96,12 @@ KOKKOS_FORCEINLINE_FUNCTION void mdr_growth_add_side(const MdrGrowthState<T, Dev
                                                      T R0, T inv_3kappa, T F, T delta, T R, bool plastic_loading,
                                                      bool yielded, T& delta_o_prev, T& eps_prev) {
   const T pi = constants<T>::pi;
-  const T V = gs.volume(p);  // >= volume_floor V_o > 0 (update kernel guard)
+  const T V = gs.volume(p);                // >= volume_floor V_o > 0 (update kernel guard)
   const T b = math::max(R - delta, T(0));  // branch length; >= 0 past the centre (guard)
   const T eps = -F * b * inv_3kappa / V;
   acc(p, int(MdrGrowthState<T, Device>::kEps)) += eps;
   const T delta_o = delta - (R - R0);
-  const bool contributes =
-      gs.rule == MdrGrowthRule::plastic_loading ? plastic_loading : (yielded && delta > T(0));
+  const bool contributes = gs.rule == MdrGrowthRule::plastic_loading ? plastic_loading : (yielded && delta > T(0));
   if (contributes) {
     const T ddo = delta_o - delta_o_prev;
     T num = -pi * ddo * (T(2) * delta_o * R0 - delta_o * delta_o + R * R - R0 * R0);
@@ -132,8 +129,7 @@ void mdr_update_radii(const MdrGrowthState<T, Device>& gs, int count = -1) {
   MdrGrowthState<T, Device> s = gs;  // shallow: shares the views and the copies
   const auto sums = s.sums.scatter;
   Kokkos::parallel_for(
-      "epac::mdr_update_radii", Kokkos::RangePolicy<typename Device::execution_space>(0, n),
-      KOKKOS_LAMBDA(int p) {
+      "epac::mdr_update_radii", Kokkos::RangePolicy<typename Device::execution_space>(0, n), KOKKOS_LAMBDA(int p) {
         const T pi = constants<T>::pi;
         const T eps_sum = sums.take(p, MdrGrowthState<T, Device>::kEps);
         T num = sums.take(p, MdrGrowthState<T, Device>::kNumerator);

@@ -19,26 +19,23 @@
 
 namespace epac {
 
-template <class T, class Eff = Effects<kAdhesion | kPlasticity | kFriction | kDamping>,
-          class Device = DefaultDevice>
+template <class T, class Eff = Effects<kAdhesion | kPlasticity | kFriction | kDamping>, class Device = DefaultDevice>
 struct Nan2022 {
   using scalar_type = T;
   using effects = Eff;
   using device_type = Device;
   static constexpr const char* name = "nan2022";
-  static constexpr int alpha_max_field = 0;                        // if plasticity
-  static constexpr int state_field = Eff::plasticity ? 1 : 0;      // if adhesion
+  static constexpr int alpha_max_field = 0;                    // if plasticity
+  static constexpr int state_field = Eff::plasticity ? 1 : 0;  // if adhesion
   static constexpr int normal_history_size = (Eff::plasticity ? 1 : 0) + (Eff::adhesion ? 1 : 0);
   static constexpr int history_size = normal_history_size + (Eff::friction ? 3 : 0);
 
   Kokkos::View<Nan2022PairConstants<T>*, Device> pairs;
   int nmat = 0;
 
-  KOKKOS_INLINE_FUNCTION NormalForce<T> normal(const ContactGeometry<T>& g,
-                                               const HistoryRow<T, Device>& row) const {
+  KOKKOS_INLINE_FUNCTION NormalForce<T> normal(const ContactGeometry<T>& g, const HistoryRow<T, Device>& row) const {
     const Nan2022PairConstants<T> p = pairs(g.pair);
-    const Nan2022ContactConstants<T> c =
-        nan2022_contact_constants<T, Eff::adhesion, Eff::plasticity>(p, g.R_eff);
+    const Nan2022ContactConstants<T> c = nan2022_contact_constants<T, Eff::adhesion, Eff::plasticity>(p, g.R_eff);
     T alpha_max = Eff::plasticity ? row(alpha_max_field) : T(0);
     T cs = Eff::adhesion ? row(state_field) : T(0);
     const Nan2022NormalState<T> s =
@@ -55,15 +52,18 @@ struct Nan2022 {
       r.damping = T(2) * p.damping_ratio * beta;  // Nan (24), (26)
       r.damping_t = r.damping;                    // Nan (25)
     }
-    if (Eff::friction) { r.k_t = p.kt_over_kn * r.k_n; r.mu = p.mu; }
+    if (Eff::friction) {
+      r.k_t = p.kt_over_kn * r.k_n;
+      r.mu = p.mu;
+    }
     return r;
   }
 
   // Host: a pair table from per-pair constants (nmat x nmat, row-major), each validated.
   static Nan2022 create_from_pairs(int nmat, const std::vector<Nan2022PairConstants<double>>& table) {  // host
     require_range("nan2022 material count", nmat, 1, Bound::closed, 1 << 15, Bound::closed);
-    require_range("nan2022 pair table size", static_cast<double>(table.size()), nmat * nmat, Bound::closed,
-                  nmat * nmat, Bound::closed);
+    require_range("nan2022 pair table size", static_cast<double>(table.size()), nmat * nmat, Bound::closed, nmat * nmat,
+                  Bound::closed);
     Nan2022 m;
     m.nmat = nmat;
     m.pairs = Kokkos::View<Nan2022PairConstants<T>*, Device>("nan2022.pairs", nmat * nmat);
@@ -83,12 +83,20 @@ struct Nan2022 {
         require_representable<T>(name + ": kt_over_kn", d.kt_over_kn, from);
       }
       Nan2022PairConstants<T> t;
-      t.E_star = T(d.E_star); t.surface_energy = T(d.surface_energy); t.yield_pressure = T(d.yield_pressure);
-      t.yields = d.yields; t.kel_fixed = d.kel_fixed; t.kel_value = T(d.kel_value);
-      t.kp_fixed = d.kp_fixed; t.kp_value = T(d.kp_value);
-      t.unloading_law = d.unloading_law; t.pull_off_law = d.pull_off_law;
-      t.kt_over_kn = T(d.kt_over_kn); t.damping_ratio = T(d.damping_ratio);
-      t.beta_yielded = T(d.beta_yielded); t.mu = T(d.mu);
+      t.E_star = T(d.E_star);
+      t.surface_energy = T(d.surface_energy);
+      t.yield_pressure = T(d.yield_pressure);
+      t.yields = d.yields;
+      t.kel_fixed = d.kel_fixed;
+      t.kel_value = T(d.kel_value);
+      t.kp_fixed = d.kp_fixed;
+      t.kp_value = T(d.kp_value);
+      t.unloading_law = d.unloading_law;
+      t.pull_off_law = d.pull_off_law;
+      t.kt_over_kn = T(d.kt_over_kn);
+      t.damping_ratio = T(d.damping_ratio);
+      t.beta_yielded = T(d.beta_yielded);
+      t.mu = T(d.mu);
       h(k) = t;
     }
     Kokkos::deep_copy(m.pairs, h);
@@ -101,7 +109,10 @@ struct Nan2022 {
     std::vector<Nan2022PairConstants<double>> table(static_cast<std::size_t>(n) * n);  // host
     for (int a = 0; a < n; ++a)
       for (int b = 0; b < n; ++b) {
-        if (materials[a].rigid && materials[b].rigid) { table[a * n + b] = Nan2022PairConstants<double>{}; continue; }
+        if (materials[a].rigid && materials[b].rigid) {
+          table[a * n + b] = Nan2022PairConstants<double>{};
+          continue;
+        }
         table[a * n + b] = nan2022_pair_constants(materials[a], materials[b], opt);
       }
     return create_from_pairs(n, table);

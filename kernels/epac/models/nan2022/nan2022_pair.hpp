@@ -35,28 +35,28 @@ struct Nan2022PairConstants {
   int yields;        // 0: no yield for this pair (p_y infinite): the plastic branch never opens
   int kel_fixed;     // 0: k_el = kel_value * R* (Nan (52): kel_value = pi p_y); 1: k_el = kel_value [N/m]
   T kel_value;
-  int kp_fixed;      // 0: k_p = kp_value * k_el (default kp_value = 1); 1: k_p = kp_value [N/m]
+  int kp_fixed;  // 0: k_p = kp_value * k_el (default kp_value = 1); 1: k_p = kp_value [N/m]
   T kp_value;
-  int unloading_law; // Nan2022UnloadingLaw
-  int pull_off_law;  // Nan2022PullOffLaw
-  T kt_over_kn;      // 4 G*/E*, Nan (22)
-  T damping_ratio;   // gamma of Nan (26) with beta = 1 (from e0)
-  T beta_yielded;    // damping factor beta after yield (Nan Sec. 2.3; default 0.1)
-  T mu;              // sliding friction coefficient
+  int unloading_law;  // Nan2022UnloadingLaw
+  int pull_off_law;   // Nan2022PullOffLaw
+  T kt_over_kn;       // 4 G*/E*, Nan (22)
+  T damping_ratio;    // gamma of Nan (26) with beta = 1 (from e0)
+  T beta_yielded;     // damping factor beta after yield (Nan Sec. 2.3; default 0.1)
+  T mu;               // sliding friction coefficient
 };
 
 // The size-dependent constants of one contact.
 template <class T>
 struct Nan2022ContactConstants {
-  T f_ce;     // pull-off force before yield, 1.5 pi Gamma R*            Nan (5)
-  T f_0;      // force jump at first contact, 8/9 f_ce                    Nan (4)
-  T k_el;     // loading stiffness before yield (lower limit of k_e)
-  T k_p;      // plastic loading stiffness (<= k_el, see below)
-  T f_y;      // yield force                                               Nan (28); 0 if no yield
-  T alpha_0;  // zero-force overlap before yield, f_0/k_el                 Nan (6)
-  T alpha_y;  // yield overlap alpha_0 + f_y/k_el                          Nan (7), (29); = alpha_0 if no yield
+  T f_ce;        // pull-off force before yield, 1.5 pi Gamma R*            Nan (5)
+  T f_0;         // force jump at first contact, 8/9 f_ce                    Nan (4)
+  T k_el;        // loading stiffness before yield (lower limit of k_e)
+  T k_p;         // plastic loading stiffness (<= k_el, see below)
+  T f_y;         // yield force                                               Nan (28); 0 if no yield
+  T alpha_0;     // zero-force overlap before yield, f_0/k_el                 Nan (6)
+  T alpha_y;     // yield overlap alpha_0 + f_y/k_el                          Nan (7), (29); = alpha_0 if no yield
   T el_over_cl;  // k_el/k_cl = k_e/k_c, >= 0 (0 only in the clamped case below)
-  T A;        // coefficient of the pull-off quadratic                     Nan (56)
+  T A;           // coefficient of the pull-off quadratic                     Nan (56)
   bool yields;
 };
 
@@ -69,7 +69,9 @@ namespace nan2022_detail {
 // = 0.9236... (the paper's 0.92), 17/56 = 0.3036 (the paper's 0.3). (A1) and (A2) also print
 // k_cl where k_el belongs in the 17/162 and 64/162 terms.
 template <class T>
-KOKKOS_INLINE_FUNCTION constexpr T jkr_work_coefficient() { return T(7.09); }
+KOKKOS_INLINE_FUNCTION constexpr T jkr_work_coefficient() {
+  return T(7.09);
+}
 template <class T>
 KOKKOS_INLINE_FUNCTION T cohesive_ratio_coefficient() {
   const T pi = constants<T>::pi;
@@ -81,8 +83,8 @@ KOKKOS_INLINE_FUNCTION T cohesive_ratio_coefficient() {
 // Domains: R_star > 0, E* > 0, k_el > 0, p_y > 0 (host-validated; R_star > 0 in every contact).
 // Adhesion / Plasticity are the compile-time effects: off means Gamma = 0 / no yield, at no cost.
 template <class T, bool Adhesion = true, bool Plasticity = true>
-KOKKOS_INLINE_FUNCTION Nan2022ContactConstants<T> nan2022_contact_constants(
-    const Nan2022PairConstants<T>& p, T R_star) {
+KOKKOS_INLINE_FUNCTION Nan2022ContactConstants<T> nan2022_contact_constants(const Nan2022PairConstants<T>& p,
+                                                                            T R_star) {
   const T pi = constants<T>::pi;
   Nan2022ContactConstants<T> c;
   const T gamma = Adhesion ? p.surface_energy : T(0);
@@ -115,8 +117,7 @@ KOKKOS_INLINE_FUNCTION Nan2022ContactConstants<T> nan2022_contact_constants(
     // report flags this case (Nan2022PairReport::cohesive_ratio_clamped).
     const T er = p.E_star * R_star;
     const T denom = math::cbrt(gamma) * math::cbrt(er * er);
-    c.el_over_cl = math::max(nan2022_detail::cohesive_ratio_coefficient<T>() * c.k_el / denom -
-                                 T(17) / T(56), T(0));
+    c.el_over_cl = math::max(nan2022_detail::cohesive_ratio_coefficient<T>() * c.k_el / denom - T(17) / T(56), T(0));
     c.A = (T(16) / T(27)) / (T(56) / T(162) * c.el_over_cl + T(17) / T(162));  // denominator >= 17/162
   } else {
     // Gamma = 0: k_cl ~ Gamma^(1/3) -> 0 but the cohesive branch length (4/9) f_cp/k_c ~

@@ -33,17 +33,17 @@ enum class Nan2022PlasticFit {
 };
 
 struct Nan2022CalibrationInput {
-  double E_star = 0, R_star = 0, surface_energy = 0, yield_pressure = 0;  // of the tested contact
+  double E_star = 0, R_star = 0, surface_energy = 0, yield_pressure = 0;      // of the tested contact
   Nan2022UnloadingLaw unloading_law = Nan2022UnloadingLaw::sqrt_max_overlap;  // (45) or (49)
   Nan2022UnloadingFit unloading_fit = Nan2022UnloadingFit::secant;
   Nan2022PlasticFit plastic_fit = Nan2022PlasticFit::secants;
 };
 
 struct Nan2022Calibration {
-  std::vector<Nan2022UnloadingSummary> curves;  // host
-  std::vector<double> k_e;                      // host; per curve, Nan (50)
-  double k_p = 0;                               // Nan (51)
-  double k_e0 = 0, alpha_max0 = 0;              // the reference unloading line
+  std::vector<Nan2022UnloadingSummary> curves;                // host
+  std::vector<double> k_e;                                    // host; per curve, Nan (50)
+  double k_p = 0;                                             // Nan (51)
+  double k_e0 = 0, alpha_max0 = 0;                            // the reference unloading line
   double k_el = 0, alpha_y = 0, alpha_0 = 0, el_over_cl = 0;  // Table 3
   int iterations = 0;
 };
@@ -57,7 +57,8 @@ inline Nan2022UnloadingSummary nan2022_summarize_curve(const ForceOverlapCurve& 
     throw ParameterError(name + ": needs at least 3 (overlap, force) samples");  // host
   const std::size_t n = c.overlap.size();
   std::size_t peak = 0;
-  for (std::size_t k = 1; k < n; ++k) if (c.overlap[k] > c.overlap[peak]) peak = k;
+  for (std::size_t k = 1; k < n; ++k)
+    if (c.overlap[k] > c.overlap[peak]) peak = k;
   Nan2022UnloadingSummary s;
   s.alpha_max = c.overlap[peak];
   s.f_max = c.force[peak];
@@ -98,7 +99,8 @@ inline double nan2022_fit_slope(const std::vector<double>& x, const std::vector<
 
 inline double nan2022_unloading_slope_fit(const ForceOverlapCurve& c) {  // host
   std::size_t peak = 0;
-  for (std::size_t k = 1; k < c.overlap.size(); ++k) if (c.overlap[k] > c.overlap[peak]) peak = k;
+  for (std::size_t k = 1; k < c.overlap.size(); ++k)
+    if (c.overlap[k] > c.overlap[peak]) peak = k;
   std::vector<double> x, y;  // host
   for (std::size_t k = peak; k < c.overlap.size() && c.force[k] >= 0; ++k) {
     x.push_back(c.overlap[k]);
@@ -113,13 +115,15 @@ inline Nan2022Calibration nan2022_calibrate(const std::vector<Nan2022UnloadingSu
                                             const std::vector<double>& k_e_fitted = {}) {  // host
   require_positive("E_star", in.E_star);
   require_positive("R_star", in.R_star);
-  require_range("surface_energy", in.surface_energy, 0.0, Bound::closed, std::numeric_limits<double>::infinity(), Bound::open);
+  require_range("surface_energy", in.surface_energy, 0.0, Bound::closed, std::numeric_limits<double>::infinity(),
+                Bound::open);
   require_positive("yield_pressure", in.yield_pressure);
   require_range("number of unloading curves", static_cast<double>(curves.size()), 2, Bound::closed, 1e9, Bound::open);
   Nan2022Calibration r;
   r.curves = curves;
-  std::sort(r.curves.begin(), r.curves.end(),
-            [](const Nan2022UnloadingSummary& a, const Nan2022UnloadingSummary& b) { return a.alpha_max > b.alpha_max; });
+  std::sort(r.curves.begin(), r.curves.end(), [](const Nan2022UnloadingSummary& a, const Nan2022UnloadingSummary& b) {
+    return a.alpha_max > b.alpha_max;
+  });
   for (std::size_t i = 0; i < r.curves.size(); ++i) {
     const auto& s = r.curves[i];
     require_positive("curve alpha_max - alpha_p", s.alpha_max - s.alpha_p);
@@ -131,7 +135,8 @@ inline Nan2022Calibration nan2022_calibrate(const std::vector<Nan2022UnloadingSu
     // k_e_fitted follows the input order; re-sort with the curves
     std::vector<std::size_t> idx(curves.size());  // host
     for (std::size_t i = 0; i < idx.size(); ++i) idx[i] = i;
-    std::sort(idx.begin(), idx.end(), [&](std::size_t a, std::size_t b) { return curves[a].alpha_max > curves[b].alpha_max; });
+    std::sort(idx.begin(), idx.end(),
+              [&](std::size_t a, std::size_t b) { return curves[a].alpha_max > curves[b].alpha_max; });
     for (std::size_t i = 0; i < idx.size(); ++i) r.k_e[i] = k_e_fitted[idx[i]];
   }
   // k_p, Nan (51): with the peaks sorted by alpha_max, the mean of consecutive secants
@@ -146,7 +151,10 @@ inline Nan2022Calibration nan2022_calibrate(const std::vector<Nan2022UnloadingSu
     r.k_p = sum / static_cast<double>(r.curves.size() - 1);
   } else {
     std::vector<double> x, y;  // host
-    for (const auto& s : r.curves) { x.push_back(s.alpha_max); y.push_back(s.f_max); }
+    for (const auto& s : r.curves) {
+      x.push_back(s.alpha_max);
+      y.push_back(s.f_max);
+    }
     r.k_p = nan2022_fit_slope(x, y);
   }
   require_positive("k_p (loading peaks must rise with alpha_max)", r.k_p);
@@ -154,10 +162,19 @@ inline Nan2022Calibration nan2022_calibrate(const std::vector<Nan2022UnloadingSu
   r.alpha_max0 = r.curves.front().alpha_max;
   const auto el = nan2022_k_el_from_unloading(in.E_star, in.R_star, in.surface_energy, in.yield_pressure, r.k_e0,
                                               r.alpha_max0, in.unloading_law, r.k_p);
-  r.k_el = el.k_el; r.alpha_y = el.alpha_y; r.alpha_0 = el.alpha_0; r.iterations = el.iterations;
+  r.k_el = el.k_el;
+  r.alpha_y = el.alpha_y;
+  r.alpha_0 = el.alpha_0;
+  r.iterations = el.iterations;
   Nan2022PairConstants<double> p{};
-  p.E_star = in.E_star; p.surface_energy = in.surface_energy; p.yield_pressure = in.yield_pressure; p.yields = 1;
-  p.kel_fixed = 1; p.kel_value = r.k_el; p.kp_fixed = 1; p.kp_value = r.k_p;
+  p.E_star = in.E_star;
+  p.surface_energy = in.surface_energy;
+  p.yield_pressure = in.yield_pressure;
+  p.yields = 1;
+  p.kel_fixed = 1;
+  p.kel_value = r.k_el;
+  p.kp_fixed = 1;
+  p.kp_value = r.k_p;
   r.el_over_cl = nan2022_contact_constants<double>(p, in.R_star).el_over_cl;
   return r;
 }
@@ -166,10 +183,11 @@ inline Nan2022Calibration nan2022_calibrate(const std::vector<Nan2022UnloadingSu
 inline Nan2022Calibration nan2022_calibrate(const std::vector<ForceOverlapCurve>& curves,  // host
                                             const Nan2022CalibrationInput& in) {
   std::vector<Nan2022UnloadingSummary> s;  // host
-  std::vector<double> fitted;  // host
+  std::vector<double> fitted;              // host
   for (std::size_t i = 0; i < curves.size(); ++i) {
     s.push_back(nan2022_summarize_curve(curves[i], static_cast<int>(i)));
-    if (in.unloading_fit == Nan2022UnloadingFit::least_squares) fitted.push_back(nan2022_unloading_slope_fit(curves[i]));
+    if (in.unloading_fit == Nan2022UnloadingFit::least_squares)
+      fitted.push_back(nan2022_unloading_slope_fit(curves[i]));
   }
   return nan2022_calibrate(s, in, fitted);
 }

@@ -37,8 +37,8 @@ struct Nan2022Options {
   // Strain-rate yield stress, Nan (34): sigma_y = sigma_y^s (1 + Y ln(V_i/V_0)). Off when Y = 0.
   double strain_rate_Y = 0.0, strain_rate_V_i = 1.0, strain_rate_V_0 = 1.0;
   Nan2022ElasticStiffnessFrom k_el_from = Nan2022ElasticStiffnessFrom::yield_pressure;
-  double stiffness_pressure = 0.0;  // [Pa], for stiffness_pressure
-  double k_el = 0.0;                // [N/m], for fixed
+  double stiffness_pressure = 0.0;                              // [Pa], for stiffness_pressure
+  double k_el = 0.0;                                            // [N/m], for fixed
   double k_e0 = 0.0, alpha_max0 = 0.0, reference_radius = 0.0;  // for unloading_line [N/m, m, m]
   double k_p_ratio = 1.0;  // k_p = k_p_ratio k_el (Nan Sec. 3.3: k_p = k_el when unmeasured)
   double k_p = 0.0;        // [N/m]; > 0 overrides k_p_ratio with a fixed k_p
@@ -80,10 +80,10 @@ struct Nan2022ElasticFromUnloading {
   bool converged = false;
 };
 
-inline Nan2022ElasticFromUnloading nan2022_k_el_from_unloading(double E_star, double R_star, double gamma,
-                                                               double p_y, double k_e0, double alpha_max0,
-                                                               Nan2022UnloadingLaw law, double k_p = 0.0,
-                                                               int max_iter = 1000, double rel_tol = 1e-13) {
+inline Nan2022ElasticFromUnloading nan2022_k_el_from_unloading(double E_star, double R_star, double gamma, double p_y,
+                                                               double k_e0, double alpha_max0, Nan2022UnloadingLaw law,
+                                                               double k_p = 0.0, int max_iter = 1000,
+                                                               double rel_tol = 1e-13) {
   require_positive("E_star", E_star);
   require_positive("R_star", R_star);
   require_range("surface_energy", gamma, 0.0, Bound::closed, std::numeric_limits<double>::infinity(), Bound::open);
@@ -93,8 +93,13 @@ inline Nan2022ElasticFromUnloading nan2022_k_el_from_unloading(double E_star, do
   if (law == Nan2022UnloadingLaw::plastic_offset)
     require_range("k_p (Nan (49) needs 0 < k_p < k_e0)", k_p, 0.0, Bound::open, k_e0, Bound::open);
   Nan2022PairConstants<double> p{};
-  p.E_star = E_star; p.surface_energy = gamma; p.yield_pressure = p_y; p.yields = 1;
-  p.kel_fixed = 1; p.kp_fixed = 0; p.kp_value = 1.0;
+  p.E_star = E_star;
+  p.surface_energy = gamma;
+  p.yield_pressure = p_y;
+  p.yields = 1;
+  p.kel_fixed = 1;
+  p.kp_fixed = 0;
+  p.kp_value = 1.0;
   Nan2022ElasticFromUnloading r;
   double alpha_y = M_PI * M_PI * R_star * p_y * p_y / (4.0 * E_star * E_star);  // Nan (31)
   for (int it = 1; it <= max_iter; ++it) {
@@ -103,13 +108,19 @@ inline Nan2022ElasticFromUnloading nan2022_k_el_from_unloading(double E_star, do
     const Nan2022ContactConstants<double> c = nan2022_contact_constants<double>(p, R_star);
     const double change = std::fabs(c.alpha_y - alpha_y);
     alpha_y = c.alpha_y;
-    r.k_el = c.k_el; r.alpha_y = c.alpha_y; r.alpha_0 = c.alpha_0; r.iterations = it;
-    if (change <= rel_tol * alpha_y) { r.converged = true; break; }
+    r.k_el = c.k_el;
+    r.alpha_y = c.alpha_y;
+    r.alpha_0 = c.alpha_0;
+    r.iterations = it;
+    if (change <= rel_tol * alpha_y) {
+      r.converged = true;
+      break;
+    }
   }
-  if (!r.converged)  // host
+  if (!r.converged)                                                                                  // host
     throw ParameterError("k_el from unloading line: Nan (29)/(45) iteration did not converge in " +  // host
                          std::to_string(max_iter) + " iterations (k_e0 = " + std::to_string(k_e0) +  // host
-                         ", alpha_max0 = " + std::to_string(alpha_max0) + ")");  // host
+                         ", alpha_max0 = " + std::to_string(alpha_max0) + ")");                      // host
   return r;
 }
 
@@ -121,8 +132,10 @@ inline void nan2022_validate(const Nan2022PairConstants<double>& p, const std::s
   require_range(n + "surface_energy", p.surface_energy, 0.0, Bound::closed, inf, Bound::open);
   if (p.yields) require_positive(n + "yield_pressure", p.yield_pressure);
   require_positive(n + (p.kel_fixed ? "k_el" : "k_el / R* (pi p_y or pi p_k)"), p.kel_value);
-  if (p.kp_fixed) require_positive(n + "k_p", p.kp_value);
-  else require_range(n + "k_p_ratio", p.kp_value, 0.0, Bound::open, 1.0, Bound::closed);
+  if (p.kp_fixed)
+    require_positive(n + "k_p", p.kp_value);
+  else
+    require_range(n + "k_p_ratio", p.kp_value, 0.0, Bound::open, 1.0, Bound::closed);
   require_range(n + "unloading_law", p.unloading_law, 0, Bound::closed, 1, Bound::closed);
   require_range(n + "pull_off_law", p.pull_off_law, 0, Bound::closed, 2, Bound::closed);
   require_range(n + "kt_over_kn", p.kt_over_kn, 0.0, Bound::closed, inf, Bound::open);
@@ -148,28 +161,38 @@ inline Nan2022PairConstants<double> nan2022_pair_constants(const Material& a, co
   switch (o.k_el_from) {
     case Nan2022ElasticStiffnessFrom::yield_pressure:
       if (!p.yields)  // host
-        throw ParameterError(name + ": k_el_from = yield_pressure (Nan (52)) needs a finite yield "  // host
+        throw ParameterError(name +
+                             ": k_el_from = yield_pressure (Nan (52)) needs a finite yield "              // host
                              "pressure, but this pair does not yield; use stiffness_pressure or fixed");  // host
-      p.kel_fixed = 0; p.kel_value = M_PI * p_y;
+      p.kel_fixed = 0;
+      p.kel_value = M_PI * p_y;
       break;
     case Nan2022ElasticStiffnessFrom::stiffness_pressure:
       require_positive(name + ": stiffness_pressure", o.stiffness_pressure);
-      p.kel_fixed = 0; p.kel_value = M_PI * o.stiffness_pressure;
+      p.kel_fixed = 0;
+      p.kel_value = M_PI * o.stiffness_pressure;
       break;
     case Nan2022ElasticStiffnessFrom::fixed:
       require_positive(name + ": k_el", o.k_el);
-      p.kel_fixed = 1; p.kel_value = o.k_el;
+      p.kel_fixed = 1;
+      p.kel_value = o.k_el;
       break;
     case Nan2022ElasticStiffnessFrom::unloading_line: {
       require_positive(name + ": reference_radius", o.reference_radius);
-      const auto r = nan2022_k_el_from_unloading(p.E_star, o.reference_radius, p.surface_energy, p_y,
-                                                 o.k_e0, o.alpha_max0, o.unloading_law, o.k_p);
-      p.kel_fixed = 1; p.kel_value = r.k_el;
+      const auto r = nan2022_k_el_from_unloading(p.E_star, o.reference_radius, p.surface_energy, p_y, o.k_e0,
+                                                 o.alpha_max0, o.unloading_law, o.k_p);
+      p.kel_fixed = 1;
+      p.kel_value = r.k_el;
       break;
     }
   }
-  if (o.k_p > 0.0) { p.kp_fixed = 1; p.kp_value = o.k_p; }
-  else { p.kp_fixed = 0; p.kp_value = o.k_p_ratio; }
+  if (o.k_p > 0.0) {
+    p.kp_fixed = 1;
+    p.kp_value = o.k_p;
+  } else {
+    p.kp_fixed = 0;
+    p.kp_value = o.k_p_ratio;
+  }
   p.unloading_law = static_cast<int>(o.unloading_law);
   p.pull_off_law = static_cast<int>(o.pull_off_law);
   p.kt_over_kn = 4.0 * pp.G_star / pp.E_star;
@@ -200,15 +223,15 @@ struct Nan2022PairReport {
   double R_star = 0;
   double f_ce = 0, f_0 = 0, k_el = 0, k_cl = 0, k_p = 0, f_y = 0;
   double alpha_0 = 0, alpha_y = 0, alpha_ce = 0, alpha_je = 0;
-  double el_over_cl = 0;          // k_el/k_cl (0 without adhesion)
+  double el_over_cl = 0;                // k_el/k_cl (0 without adhesion)
   bool cohesive_ratio_clamped = false;  // k_el/k_cl formula went negative (see nan2022_pair.hpp)
-  double W_jkr = 0;               // Nan (37)
-  double W_0 = 0;                 // the linear law's adhesive work, Nan (35)/(A1): equals W_jkr
-  double k_hertz_at_yield = 0;    // 2 E* sqrt(R* alpha_y), Nan (41) (Table 3)
+  double W_jkr = 0;                     // Nan (37)
+  double W_0 = 0;                       // the linear law's adhesive work, Nan (35)/(A1): equals W_jkr
+  double k_hertz_at_yield = 0;          // 2 E* sqrt(R* alpha_y), Nan (41) (Table 3)
   bool yields = false;
-  double cohesion_yield_number = nan2022_unbounded;   // Nan (81)
-  double critical_yield_pressure = 0;  // Nan (80) (k_el by (52)); 0 without adhesion
-  bool adhesion_induced_yield = false; // f_y < f_0: contact always yields once formed (CY < ~0.74)
+  double cohesion_yield_number = nan2022_unbounded;  // Nan (81)
+  double critical_yield_pressure = 0;                // Nan (80) (k_el by (52)); 0 without adhesion
+  bool adhesion_induced_yield = false;               // f_y < f_0: contact always yields once formed (CY < ~0.74)
 };
 
 inline Nan2022PairReport nan2022_pair_report(const Nan2022PairConstants<double>& p, double R_star) {
@@ -216,8 +239,14 @@ inline Nan2022PairReport nan2022_pair_report(const Nan2022PairConstants<double>&
   const Nan2022ContactConstants<double> c = nan2022_contact_constants<double>(p, R_star);
   Nan2022PairReport r;
   r.R_star = R_star;
-  r.f_ce = c.f_ce; r.f_0 = c.f_0; r.k_el = c.k_el; r.k_p = c.k_p; r.f_y = c.f_y;
-  r.alpha_0 = c.alpha_0; r.alpha_y = c.alpha_y; r.yields = c.yields;
+  r.f_ce = c.f_ce;
+  r.f_0 = c.f_0;
+  r.k_el = c.k_el;
+  r.k_p = c.k_p;
+  r.f_y = c.f_y;
+  r.alpha_0 = c.alpha_0;
+  r.alpha_y = c.alpha_y;
+  r.yields = c.yields;
   r.alpha_ce = c.alpha_0 - c.f_ce / c.k_el;  // Nan (8)
   r.el_over_cl = c.el_over_cl;
   r.k_cl = c.el_over_cl > 0 ? c.k_el / c.el_over_cl : 0.0;
@@ -225,7 +254,8 @@ inline Nan2022PairReport nan2022_pair_report(const Nan2022PairConstants<double>&
   const double g = p.surface_energy;
   if (g > 0) {
     const double raw = nan2022_detail::cohesive_ratio_coefficient<double>() * c.k_el /
-                           (std::cbrt(g) * std::cbrt(p.E_star * R_star * p.E_star * R_star)) - 17.0 / 56.0;
+                           (std::cbrt(g) * std::cbrt(p.E_star * R_star * p.E_star * R_star)) -
+                       17.0 / 56.0;
     r.cohesive_ratio_clamped = raw < 0;
     r.W_jkr = 7.09 * std::cbrt(std::pow(g, 5) * std::pow(R_star, 4) / (p.E_star * p.E_star));
     r.W_0 = 56.0 / 162.0 * c.f_ce * c.f_ce / c.k_el * c.el_over_cl + 17.0 / 162.0 * c.f_ce * c.f_ce / c.k_el;

@@ -15,21 +15,20 @@
 namespace epac {
 
 struct Nan2022StickingVelocities {
-  double V_s = 0;    // Nan (73), from the linear law's own adhesive work W_0 (= W_JKR)
-  double V_y0 = 0;   // Nan (74); 0 (meaningless) when !yields
-  double V_y = 0;    // Nan (75); 0 when always_yields or !yields
-  double V_ys = 0;   // critical sticking velocity: V_s if the contact has not yielded at V_ys
+  double V_s = 0;   // Nan (73), from the linear law's own adhesive work W_0 (= W_JKR)
+  double V_y0 = 0;  // Nan (74); 0 (meaningless) when !yields
+  double V_y = 0;   // Nan (75); 0 when always_yields or !yields
+  double V_ys = 0;  // critical sticking velocity: V_s if the contact has not yielded at V_ys
   bool yields = false;
-  bool always_yields = false;   // f_y < f_0: V_y^2 < 0
+  bool always_yields = false;           // f_y < f_0: V_y^2 < 0
   bool yields_before_sticking = false;  // V_y < V_s: V_ys from the fixed point (78)-(79)
-  double f_max = 0;  // maximum force of the impact at V_ys (fixed point of (78))
+  double f_max = 0;                     // maximum force of the impact at V_ys (fixed point of (78))
   int iterations = 0;
   bool converged = true;
 };
 
 // Nan (73) in closed form, 1.84 (Gamma/R)^(5/6) / (rho^(1/2) E*^(1/3)) for a sphere on a flat.
-inline double nan2022_adhesive_sticking_velocity_closed_form(double gamma, double R, double density,
-                                                             double E_star) {
+inline double nan2022_adhesive_sticking_velocity_closed_form(double gamma, double R, double density, double E_star) {
   return std::sqrt(2.0 * 7.09 / (4.0 / 3.0 * M_PI)) * std::pow(gamma / R, 5.0 / 6.0) /
          (std::sqrt(density) * std::cbrt(E_star));
 }
@@ -51,13 +50,20 @@ inline Nan2022StickingVelocities nan2022_sticking_velocities(const Nan2022PairCo
   const double W0 = (56.0 / 162.0 * c.el_over_cl + 17.0 / 162.0) * c.f_ce * c.f_ce / c.k_el;
   v.V_s = std::sqrt(2.0 * W0 / mass);
   v.yields = c.yields;
-  if (!c.yields) { v.V_ys = v.V_s; return v; }
+  if (!c.yields) {
+    v.V_ys = v.V_s;
+    return v;
+  }
   v.V_y0 = std::sqrt(c.f_y * c.f_y / (mass * c.k_el));
   const double Vy2 = (c.f_y * c.f_y - c.f_0 * c.f_0) / (mass * c.k_el);  // Nan (75), may be < 0
   v.always_yields = Vy2 < 0;
   v.V_y = v.always_yields ? 0.0 : std::sqrt(Vy2);
   v.yields_before_sticking = v.V_y < v.V_s;  // Nan (77)
-  if (!v.yields_before_sticking) { v.V_ys = v.V_s; v.f_max = 0; return v; }
+  if (!v.yields_before_sticking) {
+    v.V_ys = v.V_s;
+    v.f_max = 0;
+    return v;
+  }
   const double cohesive_factor = std::sqrt(1.0 + 56.0 / 81.0 * c.el_over_cl);  // k_e/k_c = k_el/k_cl
   double f_max = c.f_y;
   v.converged = false;
@@ -68,7 +74,10 @@ inline Nan2022StickingVelocities nan2022_sticking_velocities(const Nan2022PairCo
     v.iterations = it;
     const double change = std::fabs(next - f_max);
     f_max = next;
-    if (change <= rel_tol * f_max) { v.converged = true; break; }
+    if (change <= rel_tol * f_max) {
+      v.converged = true;
+      break;
+    }
   }
   v.f_max = f_max;
   // Nan (79): m V_ys^2 / 2 = m V_y^2 / 2 + (f_max^2 - f_y^2) / (2 k_p), with V_y^2 signed.

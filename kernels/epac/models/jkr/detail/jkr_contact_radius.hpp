@@ -43,9 +43,13 @@ KOKKOS_INLINE_FUNCTION JkrScales<T> jkr_scales_from(T a0_coeff, T gamma, T R_sta
 }
 
 template <class T>
-KOKKOS_INLINE_FUNCTION T jkr_critical_radius_ratio() { return T(0.39685026299204984); }  // 4^(-2/3)
+KOKKOS_INLINE_FUNCTION T jkr_critical_radius_ratio() {
+  return T(0.39685026299204984);
+}  // 4^(-2/3)
 template <class T>
-KOKKOS_INLINE_FUNCTION T jkr_critical_overlap_ratio() { return T(-0.47247039371057745); }  // -(3/4) 4^(-1/3)
+KOKKOS_INLINE_FUNCTION T jkr_critical_overlap_ratio() {
+  return T(-0.47247039371057745);
+}  // -(3/4) 4^(-1/3)
 
 // x = a/a_0 on the stable branch for d = delta/delta_s >= d_c (returns x_c below d_c), in closed
 // form (no iteration; LAMMPS's granular jkr also solves it in closed form). With y = sqrt(x), (B3)

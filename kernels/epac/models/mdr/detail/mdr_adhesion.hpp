@@ -70,16 +70,16 @@ KOKKOS_INLINE_FUNCTION T mdr_peeling_radius(T E, T gamma, T A, T B, T d, T a_lo,
 }
 
 enum MdrAdhesionState : int {
-  kMdrNoTension = 1,        // all springs compressed (or no contact)
-  kMdrTensionWithin = 2,    // edge springs stretched less than Delta l; a kept
-  kMdrPeeling = 3,          // edge springs at Delta l; a from (48)
-  kMdrSeparated = 4         // a fell below a_c: full separation this step
+  kMdrNoTension = 1,      // all springs compressed (or no contact)
+  kMdrTensionWithin = 2,  // edge springs stretched less than Delta l; a kept
+  kMdrPeeling = 3,        // edge springs at Delta l; a from (48)
+  kMdrSeparated = 4       // a fell below a_c: full separation this step
 };
 
 template <class T>
 struct MdrAdhesiveForce {
-  T F;      // MDR force (positive = compressive)
-  T a;      // new contact radius (history)
+  T F;  // MDR force (positive = compressive)
+  T a;  // new contact radius (history)
   int state;
 };
 
@@ -88,8 +88,8 @@ struct MdrAdhesiveForce {
 // Force with tension: F = F_na(g_1D(a)) + 2 E (d - g_1D(a)) a, MDR (46)-(47).
 // States 2-4 (springs in tension), kept out of the inlined hot path: a_na < a_old.
 template <class T>
-KOKKOS_INLINE_FUNCTION MdrAdhesiveForce<T> mdr_adhesive_force_tension(T E, T gamma, T xi, T A, T B, T d,
-                                                                      T a_old, T a_fac = T(1)) {
+KOKKOS_INLINE_FUNCTION MdrAdhesiveForce<T> mdr_adhesive_force_tension(T E, T gamma, T xi, T A, T B, T d, T a_old,
+                                                                      T a_fac = T(1)) {
   const T a_stored = math::min(a_old, a_fac * T(0.5) * B);  // a <= B/2 (guards the sqrt of (44))
   const T g_old = mdr_ellipse_gap(A, B, a_stored);
   const T extension = g_old - d;  // > 0 here since a_na < a_old
@@ -110,8 +110,8 @@ KOKKOS_INLINE_FUNCTION MdrAdhesiveForce<T> mdr_adhesive_force_tension(T E, T gam
 }
 
 template <class T>
-KOKKOS_FORCEINLINE_FUNCTION MdrAdhesiveForce<T> mdr_adhesive_force(T E, T gamma, T xi, T A, T B, T d,
-                                                                   T a_old, T a_fac = T(1)) {
+KOKKOS_FORCEINLINE_FUNCTION MdrAdhesiveForce<T> mdr_adhesive_force(T E, T gamma, T xi, T A, T B, T d, T a_old,
+                                                                   T a_fac = T(1)) {
   const T a_na = mdr_ellipse_contact_radius(A, B, d);
   if (a_na >= math::min(a_old, a_fac * T(0.5) * B)) {
     // state 1: no tensile springs, the non-adhesive law (a_na = 0 and d <= 0: no contact)

@@ -10,17 +10,17 @@ namespace detail {
 template <class T>
 struct MdrEvaluation {
   bool is_pair = false;
-  int nsides = 1;                   // 2 for a pair, 1 for a wall
-  bool swap = false;                // side 0 is g.j (g.i has the larger global id)
-  int part[2] = {0, -1};            // particle of each side
-  T Rs[2] = {T(0), T(0)};           // current radius of each side
-  T R0s[2] = {T(0), T(0)};          // R_o of each side (Rs without radius growth)
-  T growth_of[2] = {T(0), T(0)};    // R - R_o of each side, the shift of delta_max (MdrDeltaMax)
-  T a_adh_old[2] = {T(0), T(0)};    // adhesive radii at the start of the step
-  MdrSideState<T> st[2];            // side states: the step's start, then advanced by the law
-  MdrSideState<T> before[2];        // the states the side law started from (store_changed)
-  MdrSideResult<T> res[2];          // the sides' results
-  T dside[2] = {T(0), T(0)};        // the sides' apparent overlaps
+  int nsides = 1;                 // 2 for a pair, 1 for a wall
+  bool swap = false;              // side 0 is g.j (g.i has the larger global id)
+  int part[2] = {0, -1};          // particle of each side
+  T Rs[2] = {T(0), T(0)};         // current radius of each side
+  T R0s[2] = {T(0), T(0)};        // R_o of each side (Rs without radius growth)
+  T growth_of[2] = {T(0), T(0)};  // R - R_o of each side, the shift of delta_max (MdrDeltaMax)
+  T a_adh_old[2] = {T(0), T(0)};  // adhesive radii at the start of the step
+  MdrSideState<T> st[2];          // side states: the step's start, then advanced by the law
+  MdrSideState<T> before[2];      // the states the side law started from (store_changed)
+  MdrSideResult<T> res[2];        // the sides' results
+  T dside[2] = {T(0), T(0)};      // the sides' apparent overlaps
 };
 
 // Sides ordered by global id; a wall has one side (side 0 = particle i).

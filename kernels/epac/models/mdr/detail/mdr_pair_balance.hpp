@@ -57,7 +57,9 @@
 namespace epac {
 
 template <class T>
-KOKKOS_INLINE_FUNCTION constexpr int mdr_balance_max_evaluations() { return 64; }
+KOKKOS_INLINE_FUNCTION constexpr int mdr_balance_max_evaluations() {
+  return 64;
+}
 
 // Relative tolerance of the balance (of the scaled forces, and of the bracket against the
 // overlaps): 1e-10 in double, 8 ulps (9.5e-7) in float. Far below any physical effect; the pair's
@@ -103,12 +105,15 @@ KOKKOS_INLINE_FUNCTION T mdr_balance_split(Pair& pair, T delta, T guess, T span,
   // balanced (equal spheres: exactly), or both sides free of force (nothing to balance)
   if (balanced(g)) return finish(x, true, false);
 
-  T xb = x, gb = g;                       // best point so far
-  T a = x, b = x;                         // g(a) < 0 < g(b), valid once have_a / have_b
-  bool have_a = g < T(0), have_b = g > T(0);
-  if (have_a) a = x; else b = x;
+  T xb = x, gb = g;  // best point so far
+  T a = x, b = x;    // g(a) < 0 < g(b), valid once have_a / have_b
+  bool have_a = g<T(0), have_b = g> T(0);
+  if (have_a)
+    a = x;
+  else
+    b = x;
   T last_step = T(1e-3) * math::max(math::fabs(delta), tol * span);  // outward step before a slope
-  bool newton_ok = true;                  // the last Newton step shrank |g| enough
+  bool newton_ok = true;                                             // the last Newton step shrank |g| enough
   while (n < max_eval) {
     const bool bracketed = have_a && have_b;
     if (bracketed && settled(a, b)) break;
@@ -146,10 +151,18 @@ KOKKOS_INLINE_FUNCTION T mdr_balance_split(Pair& pair, T delta, T guess, T span,
     newton_ok = !newton || math::fabs(gn) <= T(0.5) * math::fabs(g);
     x = xn;
     g = gn;
-    if (math::fabs(g) < math::fabs(gb)) { xb = x; gb = g; }
+    if (math::fabs(g) < math::fabs(gb)) {
+      xb = x;
+      gb = g;
+    }
     if (balanced(g)) return finish(x, true, have_a && have_b);
-    if (g < T(0)) { a = x; have_a = true; }
-    else { b = x; have_b = true; }
+    if (g < T(0)) {
+      a = x;
+      have_a = true;
+    } else {
+      b = x;
+      have_b = true;
+    }
   }
   // bracket settled (or budget spent, or no sign change within the limits): the best point
   if (pair.last_x() != xb) pair(xb);

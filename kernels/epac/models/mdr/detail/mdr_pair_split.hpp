@@ -40,7 +40,9 @@
 namespace epac {
 
 template <class T>
-KOKKOS_INLINE_FUNCTION constexpr T mdr_cap_height_limit() { return T(0.75); }
+KOKKOS_INLINE_FUNCTION constexpr T mdr_cap_height_limit() {
+  return T(0.75);
+}
 
 // Height of sphere R_self's cap cut by the radical plane of two spheres at overlap d:
 // d (2 R_other - d) / (2 (R_self + R_other - d)). Domain: the centre distance R_self + R_other - d
@@ -59,8 +61,10 @@ KOKKOS_FORCEINLINE_FUNCTION T mdr_side0_height(T dmax, T R0, T R1) {
   const T h0 = mdr_radical_cap_height(dmax, R0, R1);
   const T lim = mdr_cap_height_limit<T>();
   T h = h0;
-  if (h0 > lim * R0) h = lim * R0;
-  else if (dmax - h0 > lim * R1) h = dmax - lim * R1;
+  if (h0 > lim * R0)
+    h = lim * R0;
+  else if (dmax - h0 > lim * R1)
+    h = dmax - lim * R1;
   return math::clamp(h, T(0), math::max(dmax, T(0)));  // beyond both caps (d > 1.5 R): stay in [0, d]
 }
 

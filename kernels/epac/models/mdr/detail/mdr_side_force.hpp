@@ -21,7 +21,9 @@ namespace epac {
 // and the unloading stiffness 1/r diverge; the authors' code aborts there on NaN. r stays above
 // 0.09 for delta_max/R <= 0.75 and any E/Y >= 6.25, so the floor acts only beyond delta_max ~ 0.95 R.
 template <class T>
-KOKKOS_INLINE_FUNCTION constexpr T mdr_min_recovery_ratio() { return T(0.01); }
+KOKKOS_INLINE_FUNCTION constexpr T mdr_min_recovery_ratio() {
+  return T(0.01);
+}
 
 // Per-side history (fields present only for enabled effects; see mdr_model.hpp).
 template <class T>
@@ -38,18 +40,18 @@ struct MdrSideState {
 // The ellipse of the fully-plastic regime at (delta_max, R, c_A).
 template <class T>
 struct MdrPlasticShape {
-  T A, B;       // (28)
-  T a_max;      // (36)
-  T p_Y;        // (16) with delta_max/R (21)
-  T ratio;      // r = 1 + delta_R/(A/2), floored (mdr_min_recovery_ratio)
-  T delta_p;    // residual overlap delta_max - (A/2) r = delta_max - (A/2 + delta_R)
+  T A, B;     // (28)
+  T a_max;    // (36)
+  T p_Y;      // (16) with delta_max/R (21)
+  T ratio;    // r = 1 + delta_R/(A/2), floored (mdr_min_recovery_ratio)
+  T delta_p;  // residual overlap delta_max - (A/2) r = delta_max - (A/2 + delta_R)
   bool ratio_floored;
 };
 
 // inv_R = 1/R (the caller has it). Uses the precomputed constants of MdrSideConstants.
 template <class T>
-KOKKOS_FORCEINLINE_FUNCTION MdrPlasticShape<T> mdr_plastic_shape(const MdrSideConstants<T>& c, T delta_max,
-                                                                 T R, T inv_R, T c_A) {
+KOKKOS_FORCEINLINE_FUNCTION MdrPlasticShape<T> mdr_plastic_shape(const MdrSideConstants<T>& c, T delta_max, T R,
+                                                                 T inv_R, T c_A) {
   MdrPlasticShape<T> s;
   const T pi = constants<T>::pi;
   s.p_Y = c.Y + c.Y_hard * math::exp(T(-4.4) * delta_max * inv_R);  // (16) with (21)
@@ -78,29 +80,28 @@ KOKKOS_FORCEINLINE_FUNCTION MdrPlasticShape<T> mdr_plastic_shape(const MdrSideCo
 
 // Without inv_R (tests, host tools).
 template <class T>
-KOKKOS_INLINE_FUNCTION MdrPlasticShape<T> mdr_plastic_shape(const MdrSideConstants<T>& c, T delta_max, T R,
-                                                            T c_A) {
+KOKKOS_INLINE_FUNCTION MdrPlasticShape<T> mdr_plastic_shape(const MdrSideConstants<T>& c, T delta_max, T R, T c_A) {
   return mdr_plastic_shape(c, delta_max, R, T(1) / R, c_A);  // R > 0 (host validation)
 }
 
 // What one side evaluation produces.
 template <class T>
 struct MdrSideResult {
-  T F = 0;           // MDR force, positive = compressive
-  T A = 0, B = 0;    // current ellipse
-  T d1De = 0;        // transformed elastic displacement delta_1D^e
-  T a = 0;           // contact half-width in MDR space (adhesive a when stretched)
-  T delta_max = 0;   // (19)
-  T area = 0;        // contact area (42) with c_A, >= 0
+  T F = 0;          // MDR force, positive = compressive
+  T A = 0, B = 0;   // current ellipse
+  T d1De = 0;       // transformed elastic displacement delta_1D^e
+  T a = 0;          // contact half-width in MDR space (adhesive a when stretched)
+  T delta_max = 0;  // (19)
+  T area = 0;       // contact area (42) with c_A, >= 0
   // dF/d delta of this side at this state (what a pair's balance solve needs, mdr_pair_balance.hpp;
   // dead code for walls): 2 E_eff a on the elastic branch and on the fixed ellipse below
   // delta_max (times 1/r there, (35)), d(pi p_Y a_max^2)/d delta on plastic loading (may be < 0
   // near delta = R); in adhesive peeling an estimate (the edge springs' 2 E_eff a).
   T stiffness = 0;
   bool plastic = false;
-  bool loading = false;         // delta_o >= the previous delta_o,max (plastic loading test)
-  bool ratio_floored = false;   // guard of (35) active
-  int adhesion_state = 0;       // MdrAdhesionState, 0 without adhesion
+  bool loading = false;        // delta_o >= the previous delta_o,max (plastic loading test)
+  bool ratio_floored = false;  // guard of (35) active
+  int adhesion_state = 0;      // MdrAdhesionState, 0 without adhesion
 };
 
 // Evaluates one side and advances its state s (the caller writes s back, or not, e.g. for
@@ -119,9 +120,8 @@ struct MdrSideResult {
 // common compaction step) is d = A/2 exactly, where (30) is E A B pi/8 and the width B/2, so it
 // costs one exp and two sqrt and no inverse trigonometric function; unloading adds the asin.
 template <bool Plasticity, bool Adhesion, class T>
-KOKKOS_FORCEINLINE_FUNCTION MdrSideResult<T> mdr_side_force(const MdrSideConstants<T>& c, T gamma, T xi,
-                                                            T delta, T R, T growth, MdrSideState<T>& s,
-                                                            T a_fac = T(1)) {
+KOKKOS_FORCEINLINE_FUNCTION MdrSideResult<T> mdr_side_force(const MdrSideConstants<T>& c, T gamma, T xi, T delta, T R,
+                                                            T growth, MdrSideState<T>& s, T a_fac = T(1)) {
   MdrSideResult<T> out;
   const T pi = constants<T>::pi;
   // (MdrDeltaMax::running_max, the authors' running maximum of delta itself: the model passes
@@ -132,8 +132,10 @@ KOKKOS_FORCEINLINE_FUNCTION MdrSideResult<T> mdr_side_force(const MdrSideConstan
   // (the running maximum is plasticity history; without it delta_max stays R - R_o = 0)
   T below_max = T(0);
   if (Plasticity) {
-    if (out.loading) s.delta_o_max = delta_o;
-    else below_max = delta_o - s.delta_o_max;
+    if (out.loading)
+      s.delta_o_max = delta_o;
+    else
+      below_max = delta_o - s.delta_o_max;
   }
   const T delta_max = s.delta_o_max + growth;  // (19)
   out.delta_max = delta_max;
@@ -153,8 +155,8 @@ KOKKOS_FORCEINLINE_FUNCTION MdrSideResult<T> mdr_side_force(const MdrSideConstan
     d1De_per_delta = T(1) / sh.ratio;  // ratio >= mdr_min_recovery_ratio > 0
     // plastic loading: F = pi p_Y a_max^2 ((30) at d = A/2 with (28)); p_Y' = -4.4/R (p_Y - Y) by
     // (16)+(21), (a_max^2)' = 2 (R - delta) up to the equator ((36))
-    loading_stiffness = pi * (T(2) * (R - math::min(delta_max, R)) * sh.p_Y -
-                              T(4.4) * (sh.p_Y - c.Y) * sh.a_max * sh.a_max / R);
+    loading_stiffness =
+        pi * (T(2) * (R - math::min(delta_max, R)) * sh.p_Y - T(4.4) * (sh.p_Y - c.Y) * sh.a_max * sh.a_max / R);
     out.A = sh.A;
     out.B = sh.B;
     // (35) rewritten as A/2 + (delta - delta_max)/r: the same value, without 0/0 at r -> 0;

@@ -24,8 +24,8 @@ namespace epac {
 
 template <class T>
 struct Nan2022NormalState {
-  T f = 0;       // normal force, positive repulsive
-  T k_n = 0;     // stiffness of the current branch (k_p, k_e or k_c); 0 when apart
+  T f = 0;               // normal force, positive repulsive
+  T k_n = 0;             // stiffness of the current branch (k_p, k_e or k_c); 0 when apart
   bool active = false;   // the surfaces interact (also at negative overlap down to alpha_jp)
   bool yielded = false;  // the contact has yielded (alpha_max history > 0): damping beta switch
   int branch = 0;        // 0 apart, 1 plastic, 2 elastic, 3 cohesive (for tests and output)
@@ -35,9 +35,9 @@ struct Nan2022NormalState {
 // Without adhesion the law has no hysteresis (alpha_jp = alpha_cp = alpha_c0 = alpha_p), so a
 // model compiled without adhesion stores no cs and passes cs = 0 on every call.
 template <class T, bool Plasticity = true>
-KOKKOS_INLINE_FUNCTION Nan2022NormalState<T> nan2022_normal_step(const Nan2022ContactConstants<T>& c,
-                                                                 T alpha, T& alpha_max, T& cs,
-                                                                 int unloading_law, int pull_off_law) {
+KOKKOS_INLINE_FUNCTION Nan2022NormalState<T> nan2022_normal_step(const Nan2022ContactConstants<T>& c, T alpha,
+                                                                 T& alpha_max, T& cs, int unloading_law,
+                                                                 int pull_off_law) {
   Nan2022NormalState<T> s;
   if (cs == T(0) && alpha < T(0)) alpha_max = T(0);  // separated: a new contact next time
   Nan2022Unloading<T> u = nan2022_unloading(c, alpha_max, unloading_law, pull_off_law);
@@ -60,7 +60,7 @@ KOKKOS_INLINE_FUNCTION Nan2022NormalState<T> nan2022_normal_step(const Nan2022Co
     s.k_n = u.k_c;
     s.branch = 3;
   } else {
-    cs = T(0);  // detachment at alpha_jp with -5/9 f_cp; the plastic history is kept ...
+    cs = T(0);                           // detachment at alpha_jp with -5/9 f_cp; the plastic history is kept ...
     if (alpha < T(0)) alpha_max = T(0);  // ... unless the pair has already separated
     s.active = false;
   }

@@ -22,8 +22,8 @@ struct Nan2022Unloading {
 
 // Maximum pull-off force after yield (k_e > k_el or alpha_p > alpha_0).
 template <class T>
-KOKKOS_INLINE_FUNCTION T nan2022_pull_off_force(const Nan2022ContactConstants<T>& c, T alpha_max, T k_e,
-                                                T alpha_p, int law) {
+KOKKOS_INLINE_FUNCTION T nan2022_pull_off_force(const Nan2022ContactConstants<T>& c, T alpha_max, T k_e, T alpha_p,
+                                                int law) {
   if (law == static_cast<int>(Nan2022PullOffLaw::effective_radius)) {
     // Nan (64); denominator >= f_y > 0 (only called after yield, so yields and f_y > 0)
     const T d = alpha_max - c.alpha_y;
@@ -44,9 +44,8 @@ KOKKOS_INLINE_FUNCTION T nan2022_pull_off_force(const Nan2022ContactConstants<T>
 
 // The unloading line for a history alpha_max (0 = never yielded).
 template <class T>
-KOKKOS_INLINE_FUNCTION Nan2022Unloading<T> nan2022_unloading(const Nan2022ContactConstants<T>& c,
-                                                             T alpha_max_history, int unloading_law,
-                                                             int pull_off_law) {
+KOKKOS_INLINE_FUNCTION Nan2022Unloading<T> nan2022_unloading(const Nan2022ContactConstants<T>& c, T alpha_max_history,
+                                                             int unloading_law, int pull_off_law) {
   Nan2022Unloading<T> u;
   u.alpha_max = math::max(alpha_max_history, c.alpha_y);
   if (!c.yields || !(u.alpha_max > c.alpha_y)) {
@@ -65,10 +64,10 @@ KOKKOS_INLINE_FUNCTION Nan2022Unloading<T> nan2022_unloading(const Nan2022Contac
     u.f_cp = nan2022_pull_off_force(c, u.alpha_max, u.k_e, u.alpha_p, pull_off_law);
   }
   const T fk = u.f_cp / u.k_e;
-  u.alpha_c0 = u.alpha_p - T(8) / T(9) * fk;                      // Nan (12)
-  u.alpha_cp = u.alpha_p - fk;                                    // Nan (13)
-  u.alpha_jp = u.alpha_cp - T(4) / T(9) * fk * c.el_over_cl;      // Nan (14), k_c = k_e k_cl/k_el
-  u.k_c = c.el_over_cl > T(0) ? u.k_e / c.el_over_cl : u.k_e;     // see nan2022_pair.hpp
+  u.alpha_c0 = u.alpha_p - T(8) / T(9) * fk;                   // Nan (12)
+  u.alpha_cp = u.alpha_p - fk;                                 // Nan (13)
+  u.alpha_jp = u.alpha_cp - T(4) / T(9) * fk * c.el_over_cl;   // Nan (14), k_c = k_e k_cl/k_el
+  u.k_c = c.el_over_cl > T(0) ? u.k_e / c.el_over_cl : u.k_e;  // see nan2022_pair.hpp
   return u;
 }
 
