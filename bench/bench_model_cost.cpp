@@ -10,29 +10,12 @@
 #include <epac/models/jkr/jkr.hpp>
 #include <epac/models/mdr/mdr_model.hpp>
 #include <epac/models/nan2022/nan2022.hpp>
+#include <support/benchmark_powder.hpp>
 #include <support/dense_packing.hpp>
 
 using namespace epac;
 
 namespace {
-// A cohesive polymer powder (the Ning particle of Nan Table 2, at R = 1 mm).
-Material powder() {
-  Material m;
-  m.name = "powder";
-  m.youngs_modulus = 1.2e9;
-  m.poisson_ratio = 0.3;
-  m.density = 1000;
-  m.restitution = 0.81;
-  m.friction = 0.3;
-  m.surface_energy = 0.2;
-  m.yield_stress = 35.3e6;
-  return m;
-}
-Material powder_no_adhesion() {
-  Material m = powder();
-  m.surface_energy = 0;
-  return m;
-}
 
 template <class Model>
 void run(benchmark::State& state, Model model) {
@@ -61,33 +44,33 @@ constexpr unsigned FD = kFriction | kDamping;
 
 template <class T>
 void BM_HertzMindlin(benchmark::State& s) {
-  run(s, HertzMindlin<T, Effects<FD>>::create({powder()}));
+  run(s, HertzMindlin<T, Effects<FD>>::create({bench::benchmark_powder()}));
 }
 template <class T>
 void BM_HertzJKR(benchmark::State& s) {
-  run(s, Jkr<T, Effects<FD | kAdhesion>>::create({powder()}));
+  run(s, Jkr<T, Effects<FD | kAdhesion>>::create({bench::benchmark_powder()}));
 }
 template <class T>
 void BM_Nan2022(benchmark::State& s) {
-  run(s, Nan2022<T, Effects<FD | kAdhesion | kPlasticity>>::create({powder()}));
+  run(s, Nan2022<T, Effects<FD | kAdhesion | kPlasticity>>::create({bench::benchmark_powder()}));
 }
 template <class T>
 void BM_Nan2022_NoAdhesion(benchmark::State& s) {
-  run(s, Nan2022<T, Effects<FD | kPlasticity>>::create({powder_no_adhesion()}));
+  run(s, Nan2022<T, Effects<FD | kPlasticity>>::create({bench::benchmark_powder_no_adhesion()}));
 }
 
 constexpr unsigned ALL = FD | kAdhesion | kPlasticity | kRadiusGrowth;
 template <class T>
 void BM_Mdr(benchmark::State& s) {
-  run(s, Mdr<T, Effects<ALL>>::create({powder()}));
+  run(s, Mdr<T, Effects<ALL>>::create({bench::benchmark_powder()}));
 }
 template <class T>
 void BM_Mdr_NoGrowth(benchmark::State& s) {
-  run(s, Mdr<T, Effects<ALL & ~kRadiusGrowth>>::create({powder()}));
+  run(s, Mdr<T, Effects<ALL & ~kRadiusGrowth>>::create({bench::benchmark_powder()}));
 }
 template <class T>
 void BM_Mdr_NoAdhesionNoGrowth(benchmark::State& s) {
-  run(s, Mdr<T, Effects<FD | kPlasticity>>::create({powder_no_adhesion()}));
+  run(s, Mdr<T, Effects<FD | kPlasticity>>::create({bench::benchmark_powder_no_adhesion()}));
 }
 
 void sizes(benchmark::internal::Benchmark* b) {

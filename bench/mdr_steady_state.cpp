@@ -9,6 +9,7 @@
 // noadhgrowth (no adhesion, growth), float (all effects).
 #include <epac/compute/contact_forces.hpp>
 #include <epac/models/mdr/mdr_model.hpp>
+#include <support/benchmark_powder.hpp>
 #include <support/dense_packing.hpp>
 
 #include <cstdio>
@@ -18,23 +19,6 @@
 using namespace epac;
 
 namespace {
-Material powder() {  // as bench_model_cost.cpp
-  Material m;
-  m.name = "powder";
-  m.youngs_modulus = 1.2e9;
-  m.poisson_ratio = 0.3;
-  m.density = 1000;
-  m.restitution = 0.81;
-  m.friction = 0.3;
-  m.surface_energy = 0.2;
-  m.yield_stress = 35.3e6;
-  return m;
-}
-Material powder_no_adhesion() {
-  Material m = powder();
-  m.surface_energy = 0;
-  return m;
-}
 
 constexpr unsigned FD = kFriction | kDamping;
 constexpr unsigned ALL = FD | kAdhesion | kPlasticity | kRadiusGrowth;
@@ -74,12 +58,15 @@ int main(int argc, char** argv) {
   {
     const char* v = argc > 1 ? argv[1] : "all";
     const int passes = argc > 2 ? std::atoi(argv[2]) : 20;
-    if (!std::strcmp(v, "all")) run(Mdr<double, Effects<ALL>>::create({powder()}), passes);
-    if (!std::strcmp(v, "nogrowth")) run(Mdr<double, Effects<ALL & ~kRadiusGrowth>>::create({powder()}), passes);
-    if (!std::strcmp(v, "noadh")) run(Mdr<double, Effects<FD | kPlasticity>>::create({powder_no_adhesion()}), passes);
+    if (!std::strcmp(v, "all")) run(Mdr<double, Effects<ALL>>::create({bench::benchmark_powder()}), passes);
+    if (!std::strcmp(v, "nogrowth"))
+      run(Mdr<double, Effects<ALL & ~kRadiusGrowth>>::create({bench::benchmark_powder()}), passes);
+    if (!std::strcmp(v, "noadh"))
+      run(Mdr<double, Effects<FD | kPlasticity>>::create({bench::benchmark_powder_no_adhesion()}), passes);
     if (!std::strcmp(v, "noadhgrowth"))
-      run(Mdr<double, Effects<FD | kPlasticity | kRadiusGrowth>>::create({powder_no_adhesion()}), passes);
-    if (!std::strcmp(v, "float")) run(Mdr<float, Effects<ALL>>::create({powder()}), passes);
+      run(Mdr<double, Effects<FD | kPlasticity | kRadiusGrowth>>::create({bench::benchmark_powder_no_adhesion()}),
+          passes);
+    if (!std::strcmp(v, "float")) run(Mdr<float, Effects<ALL>>::create({bench::benchmark_powder()}), passes);
   }
   Kokkos::finalize();
 }

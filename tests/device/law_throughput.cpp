@@ -12,6 +12,7 @@
 #include <epac/models/jkr/jkr.hpp>
 #include <epac/models/mdr/mdr_model.hpp>
 #include <epac/models/nan2022/nan2022.hpp>
+#include <support/benchmark_powder.hpp>
 #include <support/dense_packing.hpp>
 
 #include <cmath>
@@ -23,19 +24,6 @@
 using namespace epac;
 
 namespace {
-// The cohesive polymer powder of bench/bench_model_cost.cpp (Nan Table 2's Ning particle, R = 1 mm).
-Material powder() {
-  Material m;
-  m.name = "powder";
-  m.youngs_modulus = 1.2e9;
-  m.poisson_ratio = 0.3;
-  m.density = 1000;
-  m.restitution = 0.81;
-  m.friction = 0.3;
-  m.surface_energy = 0.2;
-  m.yield_stress = 35.3e6;
-  return m;
-}
 
 struct Row {
   std::string law, scalar;
@@ -86,10 +74,11 @@ constexpr unsigned ALL = FD | kAdhesion | kPlasticity | kRadiusGrowth;
 
 template <class T>
 void all_laws(std::vector<Row>& rows, double c, double sec) {
-  rows.push_back(measure("hertz_mindlin", HertzMindlin<T, Effects<FD>>::create({powder()}), c, sec));
-  rows.push_back(measure("jkr", Jkr<T, Effects<FD | kAdhesion>>::create({powder()}), c, sec));
-  rows.push_back(measure("nan2022", Nan2022<T, Effects<FD | kAdhesion | kPlasticity>>::create({powder()}), c, sec));
-  rows.push_back(measure("mdr", Mdr<T, Effects<ALL>>::create({powder()}), c, sec));
+  rows.push_back(measure("hertz_mindlin", HertzMindlin<T, Effects<FD>>::create({bench::benchmark_powder()}), c, sec));
+  rows.push_back(measure("jkr", Jkr<T, Effects<FD | kAdhesion>>::create({bench::benchmark_powder()}), c, sec));
+  rows.push_back(measure(
+      "nan2022", Nan2022<T, Effects<FD | kAdhesion | kPlasticity>>::create({bench::benchmark_powder()}), c, sec));
+  rows.push_back(measure("mdr", Mdr<T, Effects<ALL>>::create({bench::benchmark_powder()}), c, sec));
 }
 }  // namespace
 
