@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
 # Bootstraps Kokkos 3.4.01 with the CUDA backend (CUDA + Serial, CUDA lambdas) from Debian's
 # trilinos source package into a cache prefix, for GPU builds of epac (docs/gpu.md). Prints the
-# prefix. The nvcc_wrapper installed there finds nvcc by the absolute path used here. Offline:
-# EPAC_KOKKOS_SOURCE=<trilinos_13.2.0.orig.tar.gz or a Kokkos 3.4.01 source tree> skips apt-get.
+# prefix (~/.cache/epac/kokkos-3.4.01-cuda<version>-<arch>, one per toolkit version). The
+# nvcc_wrapper installed there finds nvcc by the absolute path used here. Offline:
+# EPAC_KOKKOS_SOURCE=<a tarball holding */packages/kokkos, or a Kokkos 3.4.01 tree> skips apt-get.
 #   bash cmake/bootstrap-kokkos-cuda.sh [KOKKOS_ARCH]     (default AMPERE80: sm_80 code + PTX)
-# nvcc: $CUDA_HOME/bin, $CUDA_PATH/bin, PATH, then the newest /usr/local/cuda*/bin. Without one it
+# nvcc: $CUDA_HOME/bin, $CUDA_PATH/bin, PATH, then the newest /usr/local/cuda*/bin (CUDA 12 without a
+# system install: CUDA_HOME="$(bash cmake/fetch-cuda-debian.sh)"). Without one it
 # prints "no CUDA toolkit" and exits 3. Environment: EPAC_KOKKOS_CUDA_PREFIX (the install prefix).
 # Idempotent: a finished install (stamp file naming the nvcc version and arch) is reused at no
 # cost; a different nvcc makes a fresh build. Concurrent calls wait for each other (flock).
@@ -16,6 +18,9 @@
 #     uses (__half2double undefined): from CUDA 12 on, Kokkos' own fallback half_t is used.
 #  3. Kokkos_CudaSpace.cpp: cudaMemPrefetchAsync takes a cudaMemLocation and flags since CUDA 13.
 set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+# shellcheck source=cmake/apt-private.sh
+source "$root/cmake/apt-private.sh"
 arch="${1:-${EPAC_KOKKOS_CUDA_ARCH:-AMPERE80}}"
 arch_lc="$(tr '[:upper:]' '[:lower:]' <<<"$arch")"
 
@@ -29,7 +34,7 @@ if [ -z "$nvcc" ]; then
   exit 3
 fi
 cuda_version="$("$nvcc" --version | sed -n 's/.*release \([0-9.]*\),.*/\1/p')"
-prefix="${EPAC_KOKKOS_CUDA_PREFIX:-${XDG_CACHE_HOME:-$HOME/.cache}/epac/kokkos-3.4.01-cuda-$arch_lc}"
+prefix="${EPAC_KOKKOS_CUDA_PREFIX:-${XDG_CACHE_HOME:-$HOME/.cache}/epac/kokkos-3.4.01-cuda$cuda_version-$arch_lc}"
 stamp="$prefix/.epac-kokkos-ok"
 want="nvcc=$nvcc cuda=$cuda_version arch=$arch"
 if [ -f "$stamp" ] && [ "$(cat "$stamp")" = "$want" ]; then echo "$prefix"; exit 0; fi
@@ -43,33 +48,8 @@ if [ -f "$stamp" ]; then rm -rf "$prefix"; fi  # our own install, for another nv
 work="$(mktemp -d "${TMPDIR:-/tmp}/epac-kokkos-cuda.XXXXXX")"
 trap 'rm -rf "$work"' EXIT
 t0=$(date +%s)
-mkdir -p "$work/sources.list.d" "$work/lists/partial" "$work/src"
-# deb-src entries derived from this machine's apt configuration, in private dirs
-# (as cmake/bootstrap-kokkos.sh does: the system configuration is never changed).
-for f in /etc/apt/sources.list.d/*.sources; do
-  [ -f "$f" ] || continue
-  sed -E 's/^Types:.*/Types: deb-src/' "$f" > "$work/sources.list.d/$(basename "$f")"
-done
-for f in /etc/apt/sources.list /etc/apt/sources.list.d/*.list; do
-  [ -f "$f" ] || continue
-  grep -E '^\s*deb\s' "$f" | sed -E 's/^\s*deb\s/deb-src /' > "$work/sources.list.d/$(basename "$f").list" || true
-done
-aptopts=(-o "Dir::Etc::SourceList=/dev/null" -o "Dir::Etc::SourceParts=$work/sources.list.d"
-         -o "Dir::State::Lists=$work/lists" -o "Debug::NoLocking=1")
-src="${EPAC_KOKKOS_SOURCE:-}"
-if [ -d "$src" ]; then  # a Kokkos 3.4.01 source tree (copied: the patches edit it)
-  cp -r "$src" "$work/src/kokkos"
-else
-  if [ -z "$src" ]; then
-    echo "[epac] fetching trilinos source package for Kokkos (CUDA $cuda_version, $arch)" >&2
-    apt-get "${aptopts[@]}" update -qq >&2
-    (cd "$work/src" && apt-get "${aptopts[@]}" source --download-only -qq trilinos >&2)
-    src=$(ls "$work"/src/trilinos_*.orig.tar.* | head -n1)
-  fi
-  tar -xf "$src" -C "$work/src" --wildcards '*/packages/kokkos/*'
-  mv "$(ls -d "$work"/src/*/packages/kokkos | head -n1)" "$work/src/kokkos"
-fi
-ksrc="$work/src/kokkos"
+epac_kokkos_source "$work"
+ksrc="$work/kokkos"
 
 # 1. nvcc_wrapper: a default arch every CUDA >= 11 knows, and this nvcc unless CUDA_ROOT says else.
 sed -i -e 's/^default_arch="sm_35"$/default_arch="sm_80"/' \

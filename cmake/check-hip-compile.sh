@@ -10,6 +10,8 @@
 # EPAC_JOBS (default nproc), EPAC_CMAKE_ARGS. Without hipcc: "skipped: no hipcc", exit 0.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+# shellcheck source=cmake/apt-private.sh
+source "$root/cmake/apt-private.sh"
 hipcc="$(command -v hipcc || true)"
 if [ -z "$hipcc" ]; then echo "skipped: no hipcc (Debian: apt-get install hipcc libamdhip64-dev)"; exit 0; fi
 arch="${EPAC_KOKKOS_HIP_ARCH:-VEGA908}"
@@ -20,20 +22,8 @@ t0=$(date +%s)
 if [ ! -f "$prefix/.epac-kokkos-ok" ]; then
   work="$(mktemp -d "${TMPDIR:-/tmp}/epac-kokkos-hip.XXXXXX")"
   trap 'rm -rf "$work"' EXIT
-  mkdir -p "$work/sources.list.d" "$work/lists/partial" "$work/src"
-  for f in /etc/apt/sources.list.d/*.sources; do
-    [ -f "$f" ] && sed -E 's/^Types:.*/Types: deb-src/' "$f" > "$work/sources.list.d/$(basename "$f")"
-  done
-  for f in /etc/apt/sources.list /etc/apt/sources.list.d/*.list; do
-    [ -f "$f" ] || continue
-    grep -E '^\s*deb\s' "$f" | sed -E 's/^\s*deb\s/deb-src /' > "$work/sources.list.d/$(basename "$f").list" || true
-  done
-  aptopts=(-o "Dir::Etc::SourceList=/dev/null" -o "Dir::Etc::SourceParts=$work/sources.list.d"
-           -o "Dir::State::Lists=$work/lists" -o "Debug::NoLocking=1")
-  apt-get "${aptopts[@]}" update -qq
-  (cd "$work/src" && apt-get "${aptopts[@]}" source --download-only -qq trilinos)
-  tar -xf "$(ls "$work"/src/trilinos_*.orig.tar.* | head -n1)" -C "$work/src" --wildcards '*/packages/kokkos/*'
-  ksrc=$(ls -d "$work"/src/*/packages/kokkos | head -n1)
+  epac_kokkos_source "$work"
+  ksrc="$work/kokkos"
   cmake -S "$ksrc" -B "$work/build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_INSTALL_PREFIX="$prefix" \
     -DCMAKE_CXX_COMPILER="$hipcc" -DCMAKE_CXX_STANDARD=17 -DKokkos_ENABLE_HIP=ON -DKokkos_ENABLE_SERIAL=ON \
     -DKokkos_ARCH_"$arch"=ON -DKokkos_ENABLE_TESTS=OFF

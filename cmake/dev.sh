@@ -18,10 +18,12 @@ build="${EPAC_BUILD_DIR:-$root/build}"
 threads="${EPAC_THREADS:-${OMP_NUM_THREADS:-$(nproc)}}"
 export OMP_NUM_THREADS="$threads" OMP_PROC_BIND="${OMP_PROC_BIND:-false}"
 
-bash "$root/cmake/install-deps.sh"
 if [ "$cmd" = device ]; then
-  exec bash "$root/cmake/device-run.sh" "$@"  # its own build dir and Kokkos (CUDA)
+  # its own build dir and Kokkos (CUDA); with an offline bundle it installs nothing
+  [ -f "${EPAC_DEVICE_BUNDLE:-$root/.device-bundle}/manifest.txt" ] || bash "$root/cmake/install-deps.sh"
+  exec bash "$root/cmake/device-run.sh" "$@"
 fi
+bash "$root/cmake/install-deps.sh"
 lammps_args=()
 if [ "$cmd" = test ] && [ "${EPAC_LAMMPS:-on}" != off ]; then
   # the LAMMPS plugin's tests (tests/lammps/) need LAMMPS itself: built once, cached
