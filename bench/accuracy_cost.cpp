@@ -3,8 +3,8 @@
 //   error: a sphere (the Ning particle of Nan Table 2: R = 2.45 um, E = 1.2 GPa, nu = 0.3,
 //          Gamma = 0.2 J/m^2, sigma_y = 35.3 MPa) hits a rigid wall at 5 m/s; rebound
 //          restitution and peak force at dt = t_c/N, against the same law in double at t_c/2000.
-//          The wall is 1000 R from the origin (a box 1000 particles wide), so float runs carry
-//          the position round-off they have in a real simulation.
+//          The wall is 1000 R from the origin (a box 1000 particles wide); positions are double
+//          for any T (mixed precision), so float runs measure the float law, not coordinates.
 //   cost:  ns per contact per force pass (median of repeated passes) on a dense packing of the
 //          same particles (1.0e5 contacts, ~6 per particle), and the cost of simulating one
 //          contact duration t_c (cost per pass x N).

@@ -52,14 +52,16 @@ double triad_gbs(std::size_t n, int repeats) {
 struct KernelBytes {
   const char* name;
   int history_fields;     // per contact
-  int particle_loads;     // scalars loaded per particle (x 3, v 3, omega 3, radius, mass, [gid], ...)
+  int particle_loads;     // values loaded per particle (x 3 in double, v 3, omega 3, radius, mass, [gid], ...)
   int sums_per_particle;  // scalars accumulated per particle (force 3 + torque 3 [+ MDR 3])
 };
 
 // Bytes of one contact-step with scalar size s: list entry (2 ints), history read + write,
-// both particles' loads, and a read + write of each accumulated scalar on both particles.
+// both particles' loads (the 3 position components are double for any s: mixed precision,
+// state/particles.hpp), and a read + write of each accumulated scalar on both particles.
 std::size_t contact_kernel_bytes(const KernelBytes& k, std::size_t s) {
-  return 2 * sizeof(int) + 2 * k.history_fields * s + 2 * k.particle_loads * s + 2 * 2 * k.sums_per_particle * s;
+  const std::size_t loads = 3 * sizeof(double) + (k.particle_loads - 3) * s;
+  return 2 * sizeof(int) + 2 * k.history_fields * s + 2 * loads + 2 * 2 * k.sums_per_particle * s;
 }
 
 template <class T>

@@ -17,8 +17,8 @@ struct ImpactResult {
 };
 
 // `model` has materials {particle = 0, wall = 1}. Starts with a gap of 1e-3 R. The wall sits at
-// z = offset (positions are absolute, as in a simulation box of that size), so a float run
-// carries the round-off a particle that far from the origin really has.
+// z = offset (positions are absolute, as in a simulation box of that size); positions and the
+// wall point are double for any T (mixed precision), as a particle that far out has them.
 template <class Model>
 ImpactResult wall_impact(const Model& model, double R, double m, double v0, double dt, double t_max,
                          double offset = 0.0) {
@@ -31,7 +31,7 @@ ImpactResult wall_impact(const Model& model, double R, double m, double v0, doub
   auto x = Kokkos::create_mirror_view(p.x);
   auto v = Kokkos::create_mirror_view(p.v);
   auto f = Kokkos::create_mirror_view(p.force);
-  Kokkos::deep_copy(x, T(0));
+  Kokkos::deep_copy(x, 0.0);
   Kokkos::deep_copy(v, T(0));
   Kokkos::deep_copy(p.mass, T(m));
   Kokkos::deep_copy(p.radius, T(R));
@@ -45,19 +45,19 @@ ImpactResult wall_impact(const Model& model, double R, double m, double v0, doub
     wn(0, 2) = T(1);
     Kokkos::deep_copy(w.normal, wn);
     auto wp = Kokkos::create_mirror_view(w.point);
-    Kokkos::deep_copy(wp, T(0));
-    wp(0, 2) = T(offset);
+    Kokkos::deep_copy(wp, 0.0);
+    wp(0, 2) = offset;
     Kokkos::deep_copy(w.point, wp);
     Kokkos::deep_copy(w.material, 1);
     Kokkos::deep_copy(c.first, 0);
     Kokkos::deep_copy(c.second, 0);
   }
-  // Positions relative to the wall in double on the host; the kernel sees T.
+  // Positions relative to the wall in double on the host; the kernel sees them in double too.
   double z = R * (1 + 1e-3), vz = -v0;
   ImpactResult r;
   bool touched = false;
   auto force = [&]() {
-    x(0, 2) = T(offset + z);
+    x(0, 2) = offset + z;
     v(0, 2) = T(vz);
     Kokkos::deep_copy(p.x, x);
     Kokkos::deep_copy(p.v, v);

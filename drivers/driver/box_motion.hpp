@@ -12,7 +12,8 @@
 //    like any other displacement: the lists stay complete (LAMMPS checks the same way).
 //    Box edge at step k's force pass: L(k). (LAMMPS deforms at the end of a step, so its force
 //    pass of step k sees L(k-1): one step apart, 2.4e-4 of the strain per step here.)
-// Edges are kept on the host in double and copied into p.box (T) when they change.
+// Edges are kept on the host in double and copied into p.box (double, like the positions, for
+// any T) when they change.
 #include "driver/scene.hpp"
 
 #include <epac/state/particles.hpp>
@@ -37,26 +38,26 @@ class BoxMotion {
 
   // Writes the periodic axes into p.box (non-periodic axes keep length 0: not periodic).
   void apply(Particles<T, Device>& p) const {
-    T lo[3] = {T(0), T(0), T(0)}, len[3] = {T(0), T(0), T(0)};
+    P lo[3] = {P(0), P(0), P(0)}, len[3] = {P(0), P(0), P(0)};
     for (int d = 0; d < 3; ++d)
       if (spec_.enabled && spec_.periodic[d]) {
-        lo[d] = T(spec_.centre(d) - 0.5 * edge_[d]);
-        len[d] = T(edge_[d]);
+        lo[d] = P(spec_.centre(d) - 0.5 * edge_[d]);
+        len[d] = P(edge_[d]);
       }
-    p.box.lo = Vec3<T>(lo[0], lo[1], lo[2]);
-    p.box.length = Vec3<T>(len[0], len[1], len[2]);
+    p.box.lo = Vec3<P>(lo[0], lo[1], lo[2]);
+    p.box.length = Vec3<P>(len[0], len[1], len[2]);
   }
 
   // Wraps positions into [lo, lo + L) along the periodic axes (at a rebuild).
   void wrap(const Particles<T, Device>& p) const {
     if (!periodic()) return;
-    const PeriodicBox<T> box = p.box;
+    const PeriodicBox<P> box = p.box;
     auto x = p.x;
     Kokkos::parallel_for(
         "epac::driver::wrap_positions", Kokkos::RangePolicy<exec>(0, p.n), KOKKOS_LAMBDA(int i) {
-          x(i, 0) = PeriodicBox<T>::wrap(x(i, 0), box.lo.x, box.length.x);
-          x(i, 1) = PeriodicBox<T>::wrap(x(i, 1), box.lo.y, box.length.y);
-          x(i, 2) = PeriodicBox<T>::wrap(x(i, 2), box.lo.z, box.length.z);
+          x(i, 0) = PeriodicBox<P>::wrap(x(i, 0), box.lo.x, box.length.x);
+          x(i, 1) = PeriodicBox<P>::wrap(x(i, 1), box.lo.y, box.length.y);
+          x(i, 2) = PeriodicBox<P>::wrap(x(i, 2), box.lo.z, box.length.z);
         });
   }
 
@@ -65,19 +66,19 @@ class BoxMotion {
   bool deform_to(Particles<T, Device>& p, std::int64_t step) {
     if (!spec_.enabled || !spec_.deform) return false;
     std::array<double, 3> next;
-    T ratio[3], centre[3];
+    P ratio[3], centre[3];
     bool changed = false;
     for (int d = 0; d < 3; ++d) {
       next[d] = spec_.edge(d, step);
-      ratio[d] = T(next[d] / edge_[d]);
-      centre[d] = T(spec_.centre(d));
+      ratio[d] = P(next[d] / edge_[d]);
+      centre[d] = P(spec_.centre(d));
       if (next[d] != edge_[d]) changed = true;
     }
     if (!changed) return false;
     edge_ = next;
     apply(p);
     auto x = p.x;
-    const T r0 = ratio[0], r1 = ratio[1], r2 = ratio[2], c0 = centre[0], c1 = centre[1], c2 = centre[2];
+    const P r0 = ratio[0], r1 = ratio[1], r2 = ratio[2], c0 = centre[0], c1 = centre[1], c2 = centre[2];
     Kokkos::parallel_for(
         "epac::driver::remap_x", Kokkos::RangePolicy<exec>(0, p.n), KOKKOS_LAMBDA(int i) {
           x(i, 0) = c0 + r0 * (x(i, 0) - c0);
@@ -89,6 +90,7 @@ class BoxMotion {
 
  private:
   using exec = typename Device::execution_space;
+  using P = typename Particles<T, Device>::position_type;
   const BoxSpec& spec_;
   std::array<double, 3> edge_{0, 0, 0};
 };

@@ -10,6 +10,7 @@
 // cells along a periodic axis the -1 and +1 neighbours coincide (n = 2) or are the cell itself
 // (n = 1): each distinct cell is visited once, so every partner is found exactly once (the
 // host keeps every interaction distance below L / 2, so one image at most is in range).
+// The grid is in the positions' type (double whatever T, state/particles.hpp).
 #include <epac/core/vec3.hpp>
 #include <epac/state/particles.hpp>
 
@@ -23,8 +24,9 @@ namespace driver {
 
 template <class T, class Device>
 struct CellList {
-  Vec3<T> lo;                   // lower corner of the grid
-  Vec3<T> h{T(1), T(1), T(1)};  // cell edge per axis
+  using P = typename Particles<T, Device>::position_type;
+  Vec3<P> lo;                   // lower corner of the grid
+  Vec3<P> h{P(1), P(1), P(1)};  // cell edge per axis
   int nx = 1, ny = 1, nz = 1;
   bool px = false, py = false, pz = false;  // periodic axes
   Kokkos::View<int*, Device> start;         // ncells + 1: particles of cell c are sorted(start(c) .. start(c+1)-1)
@@ -36,17 +38,17 @@ struct CellList {
   // the host has already refused non-finite positions).
   // Periodic axis: the cell modulo n_d (the coordinate may be outside the box by a little, or by
   // any amount for a particle that ran away: the fold is exact either way).
-  KOKKOS_INLINE_FUNCTION static int axis_cell(T x, T lo_d, T h_d, int n_d, bool periodic) {
-    const T f = (x - lo_d) / h_d;  // h_d > 0 (checked on the host)
+  KOKKOS_INLINE_FUNCTION static int axis_cell(P x, P lo_d, P h_d, int n_d, bool periodic) {
+    const P f = (x - lo_d) / h_d;  // h_d > 0 (checked on the host)
     if (periodic) {
-      const T nf = T(n_d);
-      T g = f - nf * math::floor(f / nf);  // in [0, n_d]
+      const P nf = P(n_d);
+      P g = f - nf * math::floor(f / nf);  // in [0, n_d]
       const int c = static_cast<int>(g);
       return c < n_d ? (c >= 0 ? c : 0) : n_d - 1;
     }
-    return f > T(0) ? (f < T(n_d) ? static_cast<int>(f) : n_d - 1) : 0;
+    return f > P(0) ? (f < P(n_d) ? static_cast<int>(f) : n_d - 1) : 0;
   }
-  KOKKOS_INLINE_FUNCTION int cell_of(const Vec3<T>& x) const {
+  KOKKOS_INLINE_FUNCTION int cell_of(const Vec3<P>& x) const {
     const int cx = axis_cell(x.x, lo.x, h.x, nx, px), cy = axis_cell(x.y, lo.y, h.y, ny, py),
               cz = axis_cell(x.z, lo.z, h.z, nz, pz);
     return (cz * ny + cy) * nx + cx;
@@ -68,7 +70,7 @@ struct CellList {
   // Calls f(j) for every particle j in the cells around position x (its own and the up to 26
   // neighbours, across the faces of periodic axes), each distinct cell once.
   template <class F>
-  KOKKOS_INLINE_FUNCTION void for_each_near(const Vec3<T>& x, F&& f) const {
+  KOKKOS_INLINE_FUNCTION void for_each_near(const Vec3<P>& x, F&& f) const {
     const int cx = axis_cell(x.x, lo.x, h.x, nx, px), cy = axis_cell(x.y, lo.y, h.y, ny, py),
               cz = axis_cell(x.z, lo.z, h.z, nz, pz);
     int x0, x1, y0, y1, z0, z1;
@@ -94,9 +96,10 @@ struct CellList {
 template <class T, class Device>
 CellList<T, Device> build_cell_list(const Particles<T, Device>& p, T min_cell) {
   using exec = typename Device::execution_space;
+  using P = typename CellList<T, Device>::P;
   const int n = p.n;
   CellList<T, Device> cl;
-  T lo[3] = {T(0), T(0), T(0)}, hi[3] = {T(0), T(0), T(0)};
+  P lo[3] = {P(0), P(0), P(0)}, hi[3] = {P(0), P(0), P(0)};
   if (n > 0) {
     auto x = p.x;
     // Min/max comparisons skip NaN, so count non-finite coordinates first.
@@ -105,7 +108,7 @@ CellList<T, Device> build_cell_list(const Particles<T, Device>& p, T min_cell) {
         "epac::driver::finite_positions", Kokkos::RangePolicy<exec>(0, n),
         KOKKOS_LAMBDA(int i, int& b) {
           for (int d = 0; d < 3; ++d)
-            if (!(x(i, d) - x(i, d) == T(0))) ++b;  // NaN or inf
+            if (!(x(i, d) - x(i, d) == P(0))) ++b;  // NaN or inf
         },
         bad);
     if (bad > 0)
@@ -113,25 +116,25 @@ CellList<T, Device> build_cell_list(const Particles<T, Device>& p, T min_cell) {
                                " particle coordinates are not finite: the simulation diverged "  // host
                                "(time step too large?)");                                        // host
     for (int d = 0; d < 3; ++d) {
-      Kokkos::MinMaxScalar<T> mm;
+      Kokkos::MinMaxScalar<P> mm;
       Kokkos::parallel_reduce(
           "epac::driver::bounding_box", Kokkos::RangePolicy<exec>(0, n),
-          KOKKOS_LAMBDA(int i, Kokkos::MinMaxScalar<T>& v) {
-            const T c = x(i, d);
+          KOKKOS_LAMBDA(int i, Kokkos::MinMaxScalar<P>& v) {
+            const P c = x(i, d);
             if (c < v.min_val) v.min_val = c;
             if (c > v.max_val) v.max_val = c;
           },
-          Kokkos::MinMax<T>(mm));
+          Kokkos::MinMax<P>(mm));
       lo[d] = mm.min_val;
       hi[d] = mm.max_val;
     }
   }
   // Periodic axes: the grid is the box, whatever the particles' extent.
-  const T box_len[3] = {p.box.length.x, p.box.length.y, p.box.length.z};
-  const T box_lo[3] = {p.box.lo.x, p.box.lo.y, p.box.lo.z};
+  const P box_len[3] = {p.box.length.x, p.box.length.y, p.box.length.z};
+  const P box_lo[3] = {p.box.lo.x, p.box.lo.y, p.box.lo.z};
   bool per[3];
   for (int d = 0; d < 3; ++d) {
-    per[d] = box_len[d] > T(0);
+    per[d] = box_len[d] > P(0);
     if (per[d]) {
       lo[d] = box_lo[d];
       hi[d] = box_lo[d] + box_len[d];
@@ -145,15 +148,15 @@ CellList<T, Device> build_cell_list(const Particles<T, Device>& p, T min_cell) {
   };
   const double max_cells = 2.0 * n + 64.0;
   while (cells_along(0) * cells_along(1) * cells_along(2) > max_cells) h *= 1.25;
-  cl.lo = Vec3<T>(lo[0], lo[1], lo[2]);
+  cl.lo = Vec3<P>(lo[0], lo[1], lo[2]);
   cl.nx = static_cast<int>(cells_along(0));
   cl.ny = static_cast<int>(cells_along(1));
   cl.nz = static_cast<int>(cells_along(2));
   const int nd[3] = {cl.nx, cl.ny, cl.nz};
-  T hd[3];
+  P hd[3];
   for (int d = 0; d < 3; ++d)
-    hd[d] = per[d] ? static_cast<T>(static_cast<double>(box_len[d]) / nd[d]) : static_cast<T>(h);
-  cl.h = Vec3<T>(hd[0], hd[1], hd[2]);
+    hd[d] = per[d] ? static_cast<P>(static_cast<double>(box_len[d]) / nd[d]) : static_cast<P>(h);
+  cl.h = Vec3<P>(hd[0], hd[1], hd[2]);
   cl.px = per[0];
   cl.py = per[1];
   cl.pz = per[2];

@@ -11,6 +11,7 @@
 // build, d_w a wall's displacement along its normal. So the lists stay complete while
 // max_i (d_i + g_i) <= skin/2 and max_w d_w <= skin/2; ContactDetector::update rebuilds when
 // either exceeds it. Growing radii (MDR) thus eat into the same margin.
+// Distances and the reference positions are double whatever T (positions are, state/particles.hpp).
 #include "driver/cell_list.hpp"
 
 #include <epac/compute/history_remap.hpp>
@@ -42,22 +43,23 @@ template <class T, class Device>
 ContactList<Device> find_pairs(const Particles<T, Device>& p, const CellList<T, Device>& cells, T skin,
                                const ContactList<Device>& reuse = {}) {
   using exec = typename Device::execution_space;
+  using P = typename Particles<T, Device>::position_type;
   const int n = p.n;
   auto x = p.x;
   auto r = p.radius;
-  const PeriodicBox<T> box = p.box;  // distances by minimum image on its periodic axes
+  const PeriodicBox<P> box = p.box;  // distances by minimum image on its periodic axes
   const bool periodic = box.periodic();
   Kokkos::View<int*, Device> offset("epac::driver::pair_offset", n + 1);
   Kokkos::parallel_for(
       "epac::driver::pair_count", Kokkos::RangePolicy<exec>(0, n), KOKKOS_LAMBDA(int i) {
-        const Vec3<T> xi = load3(x, i);
+        const Vec3<P> xi = load3(x, i);
         const T ri = r(i);
         int c = 0;
         cells.for_each_near(xi, [&](int j) {
           if (j <= i) return;
-          Vec3<T> d = xi - load3(x, j);
+          Vec3<P> d = xi - load3(x, j);
           if (periodic) d = box.minimum_image(d);
-          const T cut = ri + r(j) + skin;
+          const P cut = P(ri) + P(r(j)) + P(skin);
           if (dot(d, d) < cut * cut) ++c;
         });
         offset(i) = c;
@@ -77,14 +79,14 @@ ContactList<Device> find_pairs(const Particles<T, Device>& p, const CellList<T, 
   auto gid = p.gid;
   Kokkos::parallel_for(
       "epac::driver::pair_fill", Kokkos::RangePolicy<exec>(0, n), KOKKOS_LAMBDA(int i) {
-        const Vec3<T> xi = load3(x, i);
+        const Vec3<P> xi = load3(x, i);
         const T ri = r(i);
         int k = offset(i);
         cells.for_each_near(xi, [&](int j) {
           if (j <= i) return;
-          Vec3<T> d = xi - load3(x, j);
+          Vec3<P> d = xi - load3(x, j);
           if (periodic) d = box.minimum_image(d);
-          const T cut = ri + r(j) + skin;
+          const P cut = P(ri) + P(r(j)) + P(skin);
           if (dot(d, d) < cut * cut) {
             // Oriented by global id: pair history that has a direction (the tangential spring's
             // displacement of first relative to second) keeps its meaning when a spatial sort
@@ -105,6 +107,7 @@ template <class T, class Device>
 ContactList<Device> find_wall_contacts(const Particles<T, Device>& p, const Walls<T, Device>& w, T skin,
                                        const ContactList<Device>& reuse = {}) {
   using exec = typename Device::execution_space;
+  using P = typename Particles<T, Device>::position_type;
   const int n = p.n, nw = w.n;
   auto x = p.x;
   auto r = p.radius;
@@ -114,10 +117,10 @@ ContactList<Device> find_wall_contacts(const Particles<T, Device>& p, const Wall
   if (nw > 0) {
     Kokkos::parallel_for(
         "epac::driver::wall_count", Kokkos::RangePolicy<exec>(0, n), KOKKOS_LAMBDA(int i) {
-          const Vec3<T> xi = load3(x, i);
+          const Vec3<P> xi = load3(x, i);
           int c = 0;
           for (int k = 0; k < nw; ++k)
-            if (dot(xi - load3(wp, k), load3(wn, k)) < r(i) + skin) ++c;
+            if (dot(xi - load3(wp, k), load3_as<P>(wn, k)) < P(r(i)) + P(skin)) ++c;
           offset(i) = c;
         });
   }
@@ -136,10 +139,10 @@ ContactList<Device> find_wall_contacts(const Particles<T, Device>& p, const Wall
   if (nw > 0 && total > 0) {
     Kokkos::parallel_for(
         "epac::driver::wall_fill", Kokkos::RangePolicy<exec>(0, n), KOKKOS_LAMBDA(int i) {
-          const Vec3<T> xi = load3(x, i);
+          const Vec3<P> xi = load3(x, i);
           int c = offset(i);
           for (int k = 0; k < nw; ++k)
-            if (dot(xi - load3(wp, k), load3(wn, k)) < r(i) + skin) {
+            if (dot(xi - load3(wp, k), load3_as<P>(wn, k)) < P(r(i)) + P(skin)) {
               first(c) = i;
               second(c) = k;
               ++c;
@@ -153,7 +156,7 @@ ContactList<Device> find_wall_contacts(const Particles<T, Device>& p, const Wall
 template <class T, class Device>
 class ContactDetector {
  public:
-  using vec_view = Kokkos::View<T* [3], Kokkos::LayoutLeft, Device>;
+  using position_view = typename Particles<T, Device>::position_view;
 
   ContactList<Device> pairs, walls;
   ContactHistory<T, Device> pair_history, wall_history;
@@ -199,10 +202,10 @@ class ContactDetector {
     walls = find_wall_contacts(p, w, skin_, walls);
     // Reference state for the rebuild rule.
     if (static_cast<int>(x_build_.extent(0)) != p.n) {
-      x_build_ = vec_view("epac::driver::x_build", p.n);
+      x_build_ = position_view("epac::driver::x_build", p.n);
       r_build_ = Kokkos::View<T*, Device>("epac::driver::r_build", p.n);
     }
-    if (static_cast<int>(wall_build_.extent(0)) != w.n) wall_build_ = vec_view("epac::driver::wall_build", w.n);
+    if (static_cast<int>(wall_build_.extent(0)) != w.n) wall_build_ = position_view("epac::driver::wall_build", w.n);
     Kokkos::deep_copy(x_build_, p.x);
     Kokkos::deep_copy(r_build_, p.radius);
     Kokkos::deep_copy(wall_build_, w.point);
@@ -224,7 +227,7 @@ class ContactDetector {
         "epac::driver::particle_shift", Kokkos::RangePolicy<exec>(0, p.n),
         KOKKOS_LAMBDA(int i, T& v) {
           const T grow = r(i) - rb(i);
-          const T s = norm(load3(x, i) - load3(xb, i)) + (grow > T(0) ? grow : T(0));
+          const T s = T(norm(load3(x, i) - load3(xb, i))) + (grow > T(0) ? grow : T(0));
           // NaN (a diverged particle) forces a rebuild, whose bounding box check reports it.
           if (!(s == s))
             v = T(1e30);
@@ -245,7 +248,7 @@ class ContactDetector {
     Kokkos::parallel_reduce(
         "epac::driver::wall_shift", Kokkos::RangePolicy<exec>(0, w.n),
         KOKKOS_LAMBDA(int k, T& v) {
-          const T s = math::fabs(dot(load3(pt, k) - load3(pb, k), load3(nr, k)));
+          const T s = T(math::fabs(dot(load3(pt, k) - load3(pb, k), load3_as<double>(nr, k))));
           if (s > v) v = s;
         },
         Kokkos::Max<T>(m));
@@ -263,7 +266,7 @@ class ContactDetector {
     return builds == 0 || particle_shift_value > half || wall_shift_value > half;
   }
   // Positions and radii at the last build (the reference of particle_shift).
-  const vec_view& reference_positions() const { return x_build_; }
+  const position_view& reference_positions() const { return x_build_; }
   const Kokkos::View<T*, Device>& reference_radii() const { return r_build_; }
 
   // Rebuilds if needed; returns whether it did.
@@ -277,7 +280,7 @@ class ContactDetector {
   using exec = typename Device::execution_space;
   T skin_ = T(0);
   int pair_fields_ = 0, wall_fields_ = 0;
-  vec_view x_build_, wall_build_;
+  position_view x_build_, wall_build_;
   Kokkos::View<T*, Device> r_build_;
 };
 

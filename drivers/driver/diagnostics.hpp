@@ -43,7 +43,7 @@ void sample_state(const Particles<T, Device>& p, const Kokkos::View<unsigned cha
       KOKKOS_LAMBDA(int i) { return 0.5 * double(I(i)) * double(dot(load3(w, i), load3(w, i))); });
   const double pe = ordered_sum<exec>(
       "epac::driver::pe_gravity", n,
-      KOKKOS_LAMBDA(int i) { return -double(m(i)) * double(dot(gravity, load3(x, i))); });
+      KOKKOS_LAMBDA(int i) { return -double(m(i)) * double(dot(vec_cast<double>(gravity), load3(x, i))); });
   s.ke_translational = ke;
   s.ke_rotational = kr;
   s.pe_gravity = pe;

@@ -4,6 +4,9 @@
 //   x += dt v                                          (drift; in kick_drift)
 //   ... contact detection, forces ...
 //   v += dt/2 (F/m + g),  omega += dt/2 torque / I     (half kick, from the new forces)
+// Positions are double whatever T (mixed precision, state/particles.hpp): the drift adds the
+// T velocity times the double dt in double, so a step smaller than a float coordinate's spacing
+// still moves the particle.
 // Spheres: I = (2/5) m R0^2 (Particles::inertia). Driven particles keep their prescribed
 // velocity and angular velocity: they drift but are never kicked.
 // kick_drift fuses the closing half kick of one step with the opening half kick and drift of the
@@ -39,13 +42,14 @@ void half_kick(const Particles<T, Device>& p, const Kokkos::View<unsigned char*,
 }
 
 // v += kick_dt (F/m + g), omega += kick_dt torque/I (not for driven particles); force = torque
-// = 0; x += dt v. Returns max_i (|x_i - x_ref_i| + max(0, R_i - R_ref_i)), the rebuild measure
-// of ContactDetector (a non-finite position returns 1e30 so that the rebuild reports it).
+// = 0; x += dt v (in double). Returns max_i (|x_i - x_ref_i| + max(0, R_i - R_ref_i)), the rebuild
+// measure of ContactDetector (a non-finite position returns 1e30 so that the rebuild reports it).
 template <class T, class Device>
 T kick_drift(const Particles<T, Device>& p, const Kokkos::View<unsigned char*, Device>& driven, const Vec3<T>& gravity,
-             T kick_dt, T dt, const Kokkos::View<T* [3], Kokkos::LayoutLeft, Device>& x_ref,
-             const Kokkos::View<T*, Device>& r_ref) {
+             T kick_dt, typename Particles<T, Device>::position_type dt,
+             const typename Particles<T, Device>::position_view& x_ref, const Kokkos::View<T*, Device>& r_ref) {
   using exec = typename Device::execution_space;
+  using P = typename Particles<T, Device>::position_type;
   auto x = p.x;
   auto v = p.v;
   auto w = p.omega;
@@ -69,10 +73,10 @@ T kick_drift(const Particles<T, Device>& p, const Kokkos::View<unsigned char*, D
         for (int d = 0; d < 3; ++d) {
           f(i, d) = T(0);
           tq(i, d) = T(0);
-          x(i, d) += dt * v(i, d);
+          x(i, d) += dt * P(v(i, d));
         }
         const T grow = R(i) - r_ref(i);
-        const T si = norm(load3(x, i) - load3(x_ref, i)) + (grow > T(0) ? grow : T(0));
+        const T si = T(norm(load3(x, i) - load3(x_ref, i))) + (grow > T(0) ? grow : T(0));
         if (!(si == si))
           s = T(1e30);
         else if (si > s)

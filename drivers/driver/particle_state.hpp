@@ -28,7 +28,7 @@ Particles<T, Device> make_particles(const Scene& s, Kokkos::View<unsigned char*,
     const ParticleSpec& q = s.particles[i];
     const double mass = sphere_mass(s.materials[q.material].density, q.radius);
     for (int d = 0; d < 3; ++d) {
-      x(i, d) = T(q.position[d]);
+      x(i, d) = q.position[d];  // double whatever T (mixed precision)
       v(i, d) = T(q.velocity[d]);
       w(i, d) = T(q.angular_velocity[d]);
     }

@@ -343,8 +343,9 @@ class SceneRun {
     // [box.deform] remap x, before the drift: the rebuild measure below sees it as displacement
     box_.deform_to(p_, step);
     // closing half kick of the previous step (if deferred) + opening half kick + drift
-    const T shift = kick_drift(p_, driven_, g_, full_step_velocities_ ? half_dt_ : dt_, dt_, det_.reference_positions(),
-                               det_.reference_radii());
+    // the drift in double with the scene's dt (positions are double, state/particles.hpp)
+    const T shift = kick_drift(p_, driven_, g_, full_step_velocities_ ? half_dt_ : dt_, scene_.run.dt,
+                               det_.reference_positions(), det_.reference_radii());
     wall_driver_->advance((step - 1) * scene_.run.dt, scene_.run.dt);
     phases_.lap(Phase::integration);
     return shift;

@@ -13,8 +13,8 @@
 namespace epac {
 namespace driver {
 
-// Wall positions are kept on the host in double (exact prescribed displacement, no drift in
-// float) and copied to the device after each move; the velocity of a step is its displacement
+// Wall positions are kept on the host in double (exact prescribed displacement) and copied to
+// the device, where they are double too (Walls::point, any T), after each move; the velocity of a step is its displacement
 // over dt, so damping and friction see the mean velocity of the step.
 template <class T, class Device>
 class WallDriver {
@@ -31,7 +31,7 @@ class WallDriver {
     for (int k = 0; k < nw; ++k) {
       pos_[k] = specs_[k].point;
       for (int d = 0; d < 3; ++d) {
-        point_(k, d) = T(pos_[k][d]);
+        point_(k, d) = pos_[k][d];
         nrm(k, d) = T(specs_[k].normal[d]);
         vel_(k, d) = T(0);
       }
@@ -52,7 +52,7 @@ class WallDriver {
         const T vel = T(d[c] / dt);
         if (d[c] != 0.0 || vel_(k, c) != vel) changed = true;
         pos_[k][c] += d[c];
-        point_(k, c) = T(pos_[k][c]);
+        point_(k, c) = pos_[k][c];
         vel_(k, c) = vel;
       }
     }
@@ -84,7 +84,8 @@ class WallDriver {
  private:
   const std::vector<WallSpec>& specs_;
   Walls<T, Device>& w_;
-  host_mirror_t<typename Walls<T, Device>::vec_view> point_, vel_;
+  host_mirror_t<typename Walls<T, Device>::position_view> point_;
+  host_mirror_t<typename Walls<T, Device>::vec_view> vel_;
   std::vector<Vec3d> pos_, at_build_;
 };
 

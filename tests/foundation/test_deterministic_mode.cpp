@@ -172,7 +172,8 @@ Setup make_setup() {
 // Host copies of everything a run produces.
 template <class T>
 struct Result {
-  std::vector<T> force, torque, x, v, w, radius, pair_hist, wall_hist;
+  std::vector<T> force, torque, v, w, radius, pair_hist, wall_hist;
+  std::vector<double> x;  // positions are double for any T (mixed precision)
   int pair_fields = 0, wall_fields = 0;
 };
 

@@ -206,17 +206,7 @@ FlatTrace run_flats(Model model, double R0, const std::vector<double>& delta_o_p
       const int nmat = model.nmat;
       Kokkos::parallel_for(
           "mdr_test::flat_outputs", Kokkos::RangePolicy<typename D::execution_space>(0, 1), KOKKOS_LAMBDA(int) {
-            ContactGeometry<T> g;
-            g.i = 0;
-            g.j = -1;
-            g.wall = 0;
-            g.pair = pp.material(0) * nmat + ww.material(0);
-            g.n = load3(ww.normal, 0);
-            const T dist = dot(load3(pp.x, 0) - load3(ww.point, 0), g.n);
-            g.R_i = pp.radius(0);
-            g.delta = g.R_i - dist;
-            g.R_eff = g.R_i;
-            g.m_eff = pp.mass(0);
+            const ContactGeometry<T> g = wall_geometry(pp, ww, 0, 0, nmat);  // the kernel's geometry
             const MdrContactOutput<T> o = mm.outputs(g, HistoryRow<T, D>{hp.data, 0, 0});
             extra(0) = o.area;
             extra(1) = o.mean_pressure;

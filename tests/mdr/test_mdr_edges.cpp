@@ -120,7 +120,12 @@ TEMPLATE_LIST_TEST_CASE("MDR edges: pairs with very unequal surface energies sta
         REQUIRE(s.radii_finite());
         max_tension = std::max(max_tension, -F);
       }
-      CHECK(max_tension > 0.0);  // adhesion acted
+      // Adhesion acted. Not checked where the unload's 1e-4 R0 steps jump over the whole tensile
+      // window: with the stiff side 100 times stiffer and energies 1e6 apart the window is 26 nm
+      // wide (tension 1e-3 N, seen with 1 nm steps in double and float), at 1e9 below 1 nm. There
+      // this check used to pass on rounding noise alone (-1.2e-15 N in double; -6e-8 N, one ulp,
+      // in float, whose overlap was then taken from float positions).
+      if (ratio < 1e6 || Eratio == 1.0) CHECK(max_tension > 0.0);
       const double F_far = s.step(-200 * R0);
       CHECK(F_far == 0.0);
       const double F_back = s.step(0.01 * R0);

@@ -53,11 +53,18 @@ KOKKOS_FORCEINLINE_FUNCTION int pair_table_index(const Particles<T, Device>& p, 
 // it (velocity terms and dt are filled by the kernels). Public so that outputs computed outside
 // a force pass (the driver's per-contact samples) see exactly the same contact. Periodic axes of
 // p.box use the minimum image.
-template <class T, class Device, bool SideOrder = true>
-KOKKOS_FORCEINLINE_FUNCTION ContactGeometry<T> pair_geometry(const Particles<T, Device>& p, int i, int j, int nmat) {
-  Vec3<T> d = load3(p.x, i) - load3(p.x, j);
+// Mixed precision: separation, distance and overlap are computed from the double positions, and
+// only the results (overlap, unit normal) are rounded to T: a float overlap then has float's
+// relative accuracy wherever the pair is, instead of the absolute spacing of its coordinates.
+// The *_exact forms also return the overlap in double, for the contact-point arms.
+namespace detail {
+template <class T, class Device, bool SideOrder>
+KOKKOS_FORCEINLINE_FUNCTION ContactGeometry<T> pair_geometry_exact(const Particles<T, Device>& p, int i, int j,
+                                                                   int nmat, double& delta) {
+  using P = typename Particles<T, Device>::position_type;
+  Vec3<P> d = load3(p.x, i) - load3(p.x, j);
   if (p.box.periodic()) d = p.box.minimum_image(d);
-  const T dist = norm(d);
+  const P dist = norm(d);
   ContactGeometry<T> g;
   g.i = i;
   g.j = j;
@@ -65,8 +72,9 @@ KOKKOS_FORCEINLINE_FUNCTION ContactGeometry<T> pair_geometry(const Particles<T, 
   g.R_i = p.radius(i);
   g.R_j = p.radius(j);
   // Coincident centres have no normal; pick x so the law still sees the overlap.
-  g.n = dist > T(0) ? (T(1) / dist) * d : Vec3<T>(T(1), T(0), T(0));
-  g.delta = g.R_i + g.R_j - dist;
+  g.n = dist > P(0) ? vec_cast<T>((P(1) / dist) * d) : Vec3<T>(T(1), T(0), T(0));
+  delta = P(g.R_i) + P(g.R_j) - dist;
+  g.delta = T(delta);
   g.R_eff = g.R_i * g.R_j / (g.R_i + g.R_j);  // radii > 0 (host validation)
   const T mi = p.mass(i), mj = p.mass(j);
   g.m_eff = mi * mj / (mi + mj);  // masses > 0 (host validation)
@@ -75,21 +83,38 @@ KOKKOS_FORCEINLINE_FUNCTION ContactGeometry<T> pair_geometry(const Particles<T, 
 }
 
 template <class T, class Device>
-KOKKOS_FORCEINLINE_FUNCTION ContactGeometry<T> wall_geometry(const Particles<T, Device>& p, const Walls<T, Device>& w,
-                                                             int i, int wl, int nmat) {
+KOKKOS_FORCEINLINE_FUNCTION ContactGeometry<T> wall_geometry_exact(const Particles<T, Device>& p,
+                                                                   const Walls<T, Device>& w, int i, int wl, int nmat,
+                                                                   double& delta) {
+  using P = typename Particles<T, Device>::position_type;
   ContactGeometry<T> g;
   g.i = i;
   g.j = -1;
   g.wall = wl;
   g.pair = p.material(i) * nmat + w.material(wl);
   g.n = load3(w.normal, wl);
-  const T dist = dot(load3(p.x, i) - load3(w.point, wl), g.n);
+  const P dist = dot(load3(p.x, i) - load3(w.point, wl), vec_cast<P>(g.n));
   g.R_i = p.radius(i);
   g.R_j = T(0);
-  g.delta = g.R_i - dist;
+  delta = P(g.R_i) - dist;
+  g.delta = T(delta);
   g.R_eff = g.R_i;
   g.m_eff = p.mass(i);
   return g;
+}
+}  // namespace detail
+
+template <class T, class Device, bool SideOrder = true>
+KOKKOS_FORCEINLINE_FUNCTION ContactGeometry<T> pair_geometry(const Particles<T, Device>& p, int i, int j, int nmat) {
+  double delta;
+  return detail::pair_geometry_exact<T, Device, SideOrder>(p, i, j, nmat, delta);
+}
+
+template <class T, class Device>
+KOKKOS_FORCEINLINE_FUNCTION ContactGeometry<T> wall_geometry(const Particles<T, Device>& p, const Walls<T, Device>& w,
+                                                             int i, int wl, int nmat) {
+  double delta;
+  return detail::wall_geometry_exact(p, w, i, wl, nmat, delta);
 }
 
 namespace detail {
@@ -204,14 +229,15 @@ void pair_kernel(const Model& model, const Particles<T, Device>& p, const Contac
           j = t;
         }
         // i_is_first stays true (its default): canonical orientation, or a law that ignores it
-        ContactGeometry<T> g = pair_geometry<T, Device, false>(p, i, j, nmat);
+        double delta;  // the overlap before rounding to T: the arms below are double geometry too
+        ContactGeometry<T> g = detail::pair_geometry_exact<T, Device, false>(p, i, j, nmat, delta);
         g.contact = k;
         g.dt = dt;
-        const T half = T(0.5) * g.delta;  // contact point: middle of the overlap zone
+        const double half = 0.5 * delta;  // contact point: middle of the overlap zone
         const Vec3<T> v_rel = load3(p.v, i) - load3(p.v, j);
         auto fa = fsum.access();
         auto ta = tsum.access();
-        detail::finish_contact<true>(model, conv, p, g, v_rel, g.R_i - half, g.R_j - half,
+        detail::finish_contact<true>(model, conv, p, g, v_rel, T(double(g.R_i) - half), T(double(g.R_j) - half),
                                      HistoryRow<T, Device>{hdata, k, 0}, out, buf, k, fa, ta, reversed);
       });
 }
@@ -255,14 +281,15 @@ void compute_wall_forces(const Model& model, const Particles<T, Device>& p, cons
   Kokkos::parallel_for(
       "epac::compute_wall_forces", Kokkos::RangePolicy<exec>(0, c.count), KOKKOS_LAMBDA(int k) {
         const int i = first(k), wl = second(k);
-        ContactGeometry<T> g = wall_geometry(p, w, i, wl, nmat);
+        double delta;
+        ContactGeometry<T> g = detail::wall_geometry_exact(p, w, i, wl, nmat, delta);
         g.contact = k;
         g.dt = dt;
-        // contact point on the plane
+        // contact point on the plane: arm R_i - delta (the distance to the plane, in double)
         const Vec3<T> v_rel = load3(p.v, i) - load3(w.velocity, wl);
         auto fa = fsum.access();
         auto ta = tsum.access();
-        detail::finish_contact<false>(model, conv, p, g, v_rel, g.R_i - g.delta, T(0),
+        detail::finish_contact<false>(model, conv, p, g, v_rel, T(double(g.R_i) - delta), T(0),
                                       HistoryRow<T, Device>{hdata, k, 0}, out, buf, k, fa, ta);
       });
 }

@@ -66,10 +66,21 @@ KOKKOS_INLINE_FUNCTION T norm(const Vec3<T>& a) {
   return math::sqrt(dot(a, a));
 }
 
+// Componentwise conversion (mixed precision: double geometry, T results).
+template <class U, class T>
+KOKKOS_INLINE_FUNCTION Vec3<U> vec_cast(const Vec3<T>& a) {
+  return Vec3<U>(U(a.x), U(a.y), U(a.z));
+}
+
 // Load / store / atomic-add a row of an (n x 3) view.
 template <class View>
 KOKKOS_INLINE_FUNCTION Vec3<typename View::non_const_value_type> load3(const View& v, int i) {
   return {v(i, 0), v(i, 1), v(i, 2)};
+}
+// A row converted to U (a float normal or velocity entering double geometry).
+template <class U, class View>
+KOKKOS_INLINE_FUNCTION Vec3<U> load3_as(const View& v, int i) {
+  return {U(v(i, 0)), U(v(i, 1)), U(v(i, 2))};
 }
 template <class View, class T>
 KOKKOS_INLINE_FUNCTION void store3(const View& v, int i, const Vec3<T>& a) {
