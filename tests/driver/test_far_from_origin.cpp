@@ -123,8 +123,8 @@ double printed(double X) { return 5e-10 * std::max(1.0, 2.0 * X) + 5e-10 * 1e-3;
 TEST_CASE("epac-run: a driven pair far from the origin touches and pushes as at the origin", "[driver][mixed]") {
   for (const std::string precision : {"double", "float"}) {
     SECTION(precision) {
-      const double eps = precision == "float" ? double(std::numeric_limits<float>::epsilon())
-                                              : std::numeric_limits<double>::epsilon();
+      const double eps =
+          precision == "float" ? double(std::numeric_limits<float>::epsilon()) : std::numeric_limits<double>::epsilon();
       const Outputs ref = run(driven_pair(0.0), precision);
       const auto& f0 = ref.contacts.at("force");
       const auto& d0 = ref.contacts.at("overlap");
@@ -155,8 +155,7 @@ TEST_CASE("epac-run: a driven pair far from the origin touches and pushes as at 
         const auto& x0 = ref.particles.at("x");
         const auto& st = o.particles.at("step");
         REQUIRE(x.size() == x0.size());
-        for (std::size_t r = 0; r < x.size(); ++r)
-          CHECK(std::fabs((x[r] - X) - x0[r]) <= (st[r] + 1) * u + printed(X));
+        for (std::size_t r = 0; r < x.size(); ++r) CHECK(std::fabs((x[r] - X) - x0[r]) <= (st[r] + 1) * u + printed(X));
         // they moved 5 um each: far more than the printed digits at 1000 m (1e-6 m)
         CHECK(std::fabs((x.back() - X) - (x.front() - X)) > 4e-6);
       }
@@ -198,7 +197,7 @@ TEST_CASE("epac-run: a packing on a floor far from the origin pushes it as at th
         REQUIRE(z.size() == z0.size());
         double wz = 0;
         for (std::size_t r = 0; r < z.size(); ++r) wz = std::max(wz, std::fabs((z[r] - 0.25 * X) - z0[r]));
-        INFO("worst z difference " << wz << " m");  // measured: the CSV's printed digits (5e-8 m at 250 m)
+        INFO("worst z difference " << wz << " m");               // measured: the CSV's printed digits (5e-8 m at 250 m)
         CHECK(wz <= 4e-3 * 2e-6 + 401 * u + printed(0.25 * X));  // 0.4% of the 2 um the spheres sink
       }
     }

@@ -311,8 +311,8 @@ TEMPLATE_LIST_TEST_CASE("a packing far from the origin moves and pushes as at th
       f_max = std::max(f_max, norm3(fr.f, i));
       x_moved = std::max(x_moved, diff3(fr.x, ref.front().x, i));
     }
-  REQUIRE(f_max > 0.1);       // the packing is loaded (about 0.6 N per contact)
-  REQUIRE(x_moved > 1e-7);    // and moves: 0.3 um at 1 mm/s over 300 steps, and by the contacts
+  REQUIRE(f_max > 0.1);     // the packing is loaded (about 0.6 N per contact)
+  REQUIRE(x_moved > 1e-7);  // and moves: 0.3 um at 1 mm/s over 300 steps, and by the contacts
   // Float's own accuracy on this scene: the same run at the origin in T against double.
   const double own = worst_force_difference(ref, exact, f_max);
   INFO("float's own accuracy (T against double at the origin): " << own);
