@@ -12,7 +12,8 @@ namespace driver {
 template <class F, class Model, class T, class Device>
 ParticleSnapshot capture_snapshot(const Model& model, const Particles<T, Device>& p, std::int64_t step, double time) {
   auto host = [](const auto& v) { return Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), v); };
-  const auto x = host(p.x), v = host(p.v), w = host(p.omega), f = host(p.force);
+  const auto x = host(p.x);  // double positions: one `auto` declares one type (nvcc enforces it)
+  const auto v = host(p.v), w = host(p.omega), f = host(p.force);
   const auto R = host(p.radius), R0 = host(p.radius0);
   const auto gid = host(p.gid);
   const auto mat = host(p.material);

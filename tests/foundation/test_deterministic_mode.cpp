@@ -201,8 +201,8 @@ Result<T> run(const Setup& st, const std::vector<int>& pair_order, const std::ve
   const int n = st.n;
   Particles<T, D> p(n);
   {
-    auto x = Kokkos::create_mirror_view(p.x), v = Kokkos::create_mirror_view(p.v),
-         w = Kokkos::create_mirror_view(p.omega);
+    auto x = Kokkos::create_mirror_view(p.x);  // double positions: a declaration of its own
+    auto v = Kokkos::create_mirror_view(p.v), w = Kokkos::create_mirror_view(p.omega);
     auto m = Kokkos::create_mirror_view(p.mass), I = Kokkos::create_mirror_view(p.inertia);
     auto r0 = Kokkos::create_mirror_view(p.radius0);
     auto mat = Kokkos::create_mirror_view(p.material);  // int view: its own declaration
@@ -231,7 +231,8 @@ Result<T> run(const Setup& st, const std::vector<int>& pair_order, const std::ve
   }
   Walls<T, D> walls(2);
   {
-    auto pt = Kokkos::create_mirror_view(walls.point), nr = Kokkos::create_mirror_view(walls.normal);
+    auto pt = Kokkos::create_mirror_view(walls.point);  // double, the normal T
+    auto nr = Kokkos::create_mirror_view(walls.normal);
     auto wm = Kokkos::create_mirror_view(walls.material);
     for (int k = 0; k < 2; ++k)
       for (int d = 0; d < 3; ++d) {

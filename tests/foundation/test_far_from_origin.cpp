@@ -85,6 +85,22 @@ void drift(const Particles<T, D>& p, double dt) {
       });
 }
 
+// Half kick in T: v += dt/2 F/m, omega += dt/2 torque/I. A function of its own, not a lambda:
+// nvcc does not allow an extended (device) lambda inside another lambda.
+template <class T, class D>
+void half_kick(const Particles<T, D>& p, T dt) {
+  auto pv = p.v, pw = p.omega, pf = p.force, pt = p.torque;  // (n x 3) views
+  auto pm = p.mass, pI = p.inertia;                          // scalar views
+  const T half = T(0.5) * dt;
+  Kokkos::parallel_for(
+      Kokkos::RangePolicy<typename D::execution_space>(0, p.n), KOKKOS_LAMBDA(int i) {
+        for (int d = 0; d < 3; ++d) {
+          pv(i, d) += half * pf(i, d) / pm(i);
+          pw(i, d) += half * pt(i, d) / pI(i);
+        }
+      });
+}
+
 // Driven pair: R = 1 mm, E = 1 GPa, closing at 5 mm/s each along x with the centres 0.2 R apart
 // along y (an oblique contact: friction and torques too), 2 um apart at the start, dt = 1e-6 s,
 // 1000 steps (about 8 um of overlap at the end). Velocities are prescribed (never kicked).
@@ -258,17 +274,7 @@ std::vector<Frame> packing(double X) {
   }
   ContactHistory<T, D> h(c.count, HertzMindlin<T, Eff, D>::history_size);
   const T dt = T(1e-6);
-  auto kick = [&]() {
-    auto pv = p.v, pw = p.omega, pf = p.force, pt = p.torque, pm = p.mass, pI = p.inertia;
-    const T half = T(0.5) * dt;
-    Kokkos::parallel_for(
-        Kokkos::RangePolicy<typename D::execution_space>(0, n), KOKKOS_LAMBDA(int i) {
-          for (int d = 0; d < 3; ++d) {
-            pv(i, d) += half * pf(i, d) / pm(i);
-            pw(i, d) += half * pt(i, d) / pI(i);
-          }
-        });
-  };
+  auto kick = [&]() { half_kick(p, dt); };
   auto forces = [&]() {
     zero_forces(p);
     compute_pair_forces(model, p, c, h, dt);

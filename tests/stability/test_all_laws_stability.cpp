@@ -60,7 +60,8 @@ struct Probe {
   }
   // wall force on sphere 0 and pair force on sphere 1 (pair overlap 2 delta: delta per sphere)
   std::pair<double, double> at(double delta, double vz, double dt) {
-    auto x = Kokkos::create_mirror_view(p.x), v = Kokkos::create_mirror_view(p.v);
+    auto x = Kokkos::create_mirror_view(p.x);  // double positions: a declaration of its own
+    auto v = Kokkos::create_mirror_view(p.v);
     Kokkos::deep_copy(x, T(0));
     Kokkos::deep_copy(v, T(0));
     x(0, 2) = T(R - delta);

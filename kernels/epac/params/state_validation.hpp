@@ -64,7 +64,8 @@ void validate(const Particles<T, Device>& p, int nmat) {  // host
   const auto mat = host_copy(p.material);
   const auto r = host_copy(p.radius), r0 = host_copy(p.radius0);
   const auto m = host_copy(p.mass), inertia = host_copy(p.inertia);
-  const auto x = host_copy(p.x), v = host_copy(p.v), w = host_copy(p.omega);
+  const auto x = host_copy(p.x);  // double positions: a declaration of its own (one `auto`, one type)
+  const auto v = host_copy(p.v), w = host_copy(p.omega);
   const auto gid = host_copy(p.gid);
   for (int i = 0; i < p.n; ++i) {
     check_material("particles.material", i, mat(i), nmat);
@@ -95,7 +96,8 @@ template <class T, class Device>
 void validate(const Walls<T, Device>& w, int nmat) {  // host
   using namespace state_detail;
   const auto mat = host_copy(w.material);
-  const auto pt = host_copy(w.point), n = host_copy(w.normal), v = host_copy(w.velocity);
+  const auto pt = host_copy(w.point);  // double, the others T: declarations of their own
+  const auto n = host_copy(w.normal), v = host_copy(w.velocity);
   for (int k = 0; k < w.n; ++k) {
     check_material("walls.material", k, mat(k), nmat);
     for (int d = 0; d < 3; ++d) {
