@@ -3,12 +3,14 @@
 //   error: a sphere (the Ning particle of Nan Table 2: R = 2.45 um, E = 1.2 GPa, nu = 0.3,
 //          Gamma = 0.2 J/m^2, sigma_y = 35.3 MPa) hits a rigid wall at 5 m/s; rebound
 //          restitution and peak force at dt = t_c/N, against the same law in double at t_c/2000.
-//          The wall is 1000 R from the origin (a box 1000 particles wide); positions are double
-//          for any T (mixed precision), so float runs measure the float law, not coordinates.
+//          The wall is 1000 R from the origin (a box 1000 particles wide) for the time-step scan;
+//          at dt = t_c/20 the same impact also runs 1, 10, 100 and 1000 m from the origin (the
+//          offset scan: positions are double for any T, mixed precision, so what float keeps far
+//          out shows next to what double keeps). The reference is at the origin.
 //   cost:  ns per contact per force pass (median of repeated passes) on a dense packing of the
 //          same particles (1.0e5 contacts, ~6 per particle), and the cost of simulating one
 //          contact duration t_c (cost per pass x N).
-// Output: a markdown table on stdout and CSV (--csv FILE). Plot: bench/plot_accuracy_cost.py.
+// Output: two markdown tables on stdout (time steps, distances) and CSV (--csv FILE).
 #include <epac/compute/contact_forces.hpp>
 #include <epac/models/hertz_mindlin.hpp>
 #include <epac/models/jkr/jkr.hpp>
@@ -22,6 +24,7 @@
 #include <cstdio>
 #include <cstring>
 #include <functional>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -29,6 +32,7 @@ using namespace epac;
 
 namespace {
 constexpr double kR = 2.45e-6, kOffset = 1000 * kR, kV0 = 5.0, kE = 1.2e9, kNu = 0.3, kRho = 1000;
+constexpr double kOffsets[] = {0.0, 1.0, 10.0, 100.0, 1000.0};  // m, the offset scan at t_c/20
 
 Material particle() {
   Material m;
@@ -72,7 +76,7 @@ double ns_per_contact(const Model& model) {
 struct Row {
   std::string model, precision;
   int n_per_tc;
-  double dt, e, e_err, f_err, ns, ns_per_tc;
+  double offset, dt, e, e_err, f_err, ns, ns_per_tc;
   bool finite;
 };
 
@@ -80,19 +84,21 @@ template <template <class> class Make>
 void evaluate(const std::string& name, std::vector<Row>& rows) {  // host
   const double m = kRho * 4.0 / 3.0 * M_PI * kR * kR * kR;
   const double tc = bench::hertz_contact_time(m, kR, kE / (1 - kNu * kNu), kV0);
-  const auto ref = bench::wall_impact(Make<double>::make(), kR, m, kV0, tc / 2000, 200 * tc, kOffset);
+  const auto ref = bench::wall_impact(Make<double>::make(), kR, m, kV0, tc / 2000, 200 * tc, 0.0);
   const double cost_d = ns_per_contact(Make<double>::make());
   const double cost_f = ns_per_contact(Make<float>::make());
+  const auto add = [&](int prec, int n, double offset) {
+    const double dt = tc / n;
+    const auto r = prec == 0 ? bench::wall_impact(Make<double>::make(), kR, m, kV0, dt, 200 * tc, offset)
+                             : bench::wall_impact(Make<float>::make(), kR, m, kV0, dt, 200 * tc, offset);
+    const double ns = prec == 0 ? cost_d : cost_f;
+    rows.push_back({name, prec == 0 ? "double" : "float", n, offset, dt, r.restitution,
+                    std::abs(r.restitution - ref.restitution), std::abs(r.peak_force - ref.peak_force) / ref.peak_force,
+                    ns, ns * n, r.finite});
+  };
   for (int prec = 0; prec < 2; ++prec) {
-    for (int n : {10, 20, 50, 100, 200}) {
-      const double dt = tc / n;
-      const auto r = prec == 0 ? bench::wall_impact(Make<double>::make(), kR, m, kV0, dt, 200 * tc, kOffset)
-                               : bench::wall_impact(Make<float>::make(), kR, m, kV0, dt, 200 * tc, kOffset);
-      const double ns = prec == 0 ? cost_d : cost_f;
-      rows.push_back({name, prec == 0 ? "double" : "float", n, dt, r.restitution,
-                      std::abs(r.restitution - ref.restitution),
-                      std::abs(r.peak_force - ref.peak_force) / ref.peak_force, ns, ns * n, r.finite});
-    }
+    for (int n : {10, 20, 50, 100, 200}) add(prec, n, kOffset);
+    for (double offset : kOffsets) add(prec, 20, offset);
   }
 }
 
@@ -127,13 +133,24 @@ int main(int argc, char* argv[]) {
   evaluate<MakeMdr>("mdr", rows);
   std::printf("backend %s, %d threads; impact at %.1f m/s; errors against the same law in double at t_c/2000\n\n",
               Kokkos::DefaultExecutionSpace::name(), Kokkos::DefaultExecutionSpace().concurrency(), kV0);
+  std::printf("Time steps (the wall %.3g m from the origin):\n\n", kOffset);
   std::printf(
       "| model | precision | dt = t_c/N | restitution | abs. error e | rel. error F_max | ns per contact per pass | ns "
       "per contact per t_c simulated |\n");
   std::printf("|---|---|---|---|---|---|---|---|\n");
   for (const auto& r : rows)
-    std::printf("| %s | %s | %d | %.4f | %.2e | %.2e | %.1f | %.0f |%s\n", r.model.c_str(), r.precision.c_str(),
-                r.n_per_tc, r.e, r.e_err, r.f_err, r.ns, r.ns_per_tc, r.finite ? "" : " NON-FINITE");
+    if (r.offset == kOffset)
+      std::printf("| %s | %s | %d | %.4f | %.2e | %.2e | %.1f | %.0f |%s\n", r.model.c_str(), r.precision.c_str(),
+                  r.n_per_tc, r.e, r.e_err, r.f_err, r.ns, r.ns_per_tc, r.finite ? "" : " NON-FINITE");
+  std::printf("\nDistance from the origin (dt = t_c/20): abs. error e / rel. error F_max at 0, 1, 10, 100, 1000 m\n\n");
+  std::printf("| model | precision | 0 m | 1 m | 10 m | 100 m | 1000 m |\n|---|---|---|---|---|---|---|\n");
+  for (std::size_t a = 0; a < rows.size(); ++a) {
+    if (rows[a].offset != kOffsets[0] || rows[a].n_per_tc != 20) continue;
+    std::printf("| %s | %s |", rows[a].model.c_str(), rows[a].precision.c_str());
+    for (std::size_t b = a; b < rows.size() && b < a + std::size(kOffsets); ++b)
+      std::printf(" %.2e / %.2e |%s", rows[b].e_err, rows[b].f_err, rows[b].finite ? "" : " NON-FINITE");
+    std::printf("\n");
+  }
   if (!csv.empty()) {
     FILE* f = std::fopen(csv.c_str(), "w");
     if (!f) {
@@ -141,11 +158,11 @@ int main(int argc, char* argv[]) {
       return 1;
     }
     std::fprintf(f,
-                 "model,precision,n_per_tc,dt [s],restitution [-],abs_error_restitution [-],rel_error_peak_force [-],"
-                 "ns_per_contact [ns],ns_per_contact_per_tc [ns]\n");
+                 "model,precision,n_per_tc,offset [m],dt [s],restitution [-],abs_error_restitution [-],"
+                 "rel_error_peak_force [-],ns_per_contact [ns],ns_per_contact_per_tc [ns]\n");
     for (const auto& r : rows)
-      std::fprintf(f, "%s,%s,%d,%.6e,%.6f,%.6e,%.6e,%.3f,%.3f\n", r.model.c_str(), r.precision.c_str(), r.n_per_tc,
-                   r.dt, r.e, r.e_err, r.f_err, r.ns, r.ns_per_tc);
+      std::fprintf(f, "%s,%s,%d,%.6e,%.6e,%.6f,%.6e,%.6e,%.3f,%.3f\n", r.model.c_str(), r.precision.c_str(), r.n_per_tc,
+                   r.offset, r.dt, r.e, r.e_err, r.f_err, r.ns, r.ns_per_tc);
     std::fclose(f);
   }
   for (const auto& r : rows)

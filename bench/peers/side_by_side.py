@@ -13,7 +13,7 @@ across runs). Prints a markdown table and writes JSON (--json).
 
 Usage:
   python3 bench/peers/side_by_side.py [--threads 1 2] [--repeats 3] [--laws hm jkr nan mdr mdr_growth]
-                                      [--precision double float] [--json FILE] [--quick]
+                                      [--precision double float] [--json FILE] [--before-epac-run EXE]
 LAMMPS is built on first use (about 2-5 min; cached in ~/.cache/lammps-peer) with the build scripts
 of the LAMMPS peer kit supplied to developers beside the checkout (PEERS below; the kit's inputs
 are copied in bench/peers/lammps/, see its README.md); epac-run is taken from $EPAC_BUILD_DIR (default build/) and built if missing.
@@ -166,6 +166,9 @@ def main():
     ap.add_argument("--legacy-epac-run", default=None,
                     help="an older epac-run without periodic boxes (a 'before' build): also timed, on the "
                          "wall-wrapped scene (legacy_walls_scene.py)")
+    ap.add_argument("--before-epac-run", default=None,
+                    help="an epac-run built from an earlier commit (with periodic boxes and --time-after): timed "
+                         "on the same scene and precisions, alternating with the current one (before/after a change)")
     args = ap.parse_args()
 
     lmp = ensure_lammps(args.lmp)
@@ -186,6 +189,12 @@ def main():
                         key = ("epac", prec)
                         if key not in best or m["loop_s"] < best[key]["loop_s"]:
                             best[key] = m
+                    if args.before_epac_run:
+                        for prec in args.precision:
+                            m = epac_hold(args.before_epac_run, law, t, prec, args.ncell, work, f"before.r{r}")
+                            key = ("before", prec)
+                            if key not in best or m["loop_s"] < best[key]["loop_s"]:
+                                best[key] = m
                     if args.legacy_epac_run:
                         m = legacy_hold(args.legacy_epac_run, law, t, work, f"r{r}")
                         if "legacy" not in best or m["loop_s"] < best["legacy"]["loop_s"]:
@@ -197,6 +206,9 @@ def main():
                     if "legacy" in best:
                         row["before_ns"] = best["legacy"]["ns_per_contact_step"]
                         row["before_contacts"] = best["legacy"]["contacts"]
+                    if ("before", prec) in best:
+                        row["before_ns"] = best[("before", prec)]["ns_per_contact_step"]
+                        row["before_contacts"] = best[("before", prec)]["contacts"]
                     for pair, mode, title in LAWS[law]["lammps"]:
                         l = best[("lammps", pair)]
                         row["peers"].append({"style": title, "pair_file": f"pair.{pair}", "threaded": mode == "omp",
@@ -210,17 +222,19 @@ def main():
     print(f"Hold phase, whole step loop, ns per active contact-step (best of {args.repeats}); "
           "speedup = LAMMPS time / epac time (> 1: epac faster)")
     print()
-    legacy = args.legacy_epac_run is not None
-    print("| law | threads |" + (" epac before |" if legacy else "") + " epac | LAMMPS style | LAMMPS | speedup |")
-    print("|---|---|" + ("---|" if legacy else "") + "---|---|---|---|")
+    legacy = args.legacy_epac_run is not None or args.before_epac_run is not None
+    print("| law | threads |" + (" epac before |" if legacy else "") + " epac |" + (" after / before |" if legacy else "")
+          + " LAMMPS style | LAMMPS | speedup |")
+    print("|---|---|" + ("---|---|" if legacy else "") + "---|---|---|---|")
     for row in results:
         label = f"{row['title']}" + (f" [{row['precision']}]" if len(args.precision) > 1 else "")
         before = f" {row['before_ns']:.1f} |" if legacy else ""
+        ratio = f" {row['epac_ns'] / row['before_ns']:.2f} |" if legacy else ""
         if not row["peers"]:
-            print(f"| {label} | {row['threads']} |{before} {row['epac_ns']:.1f} | (no LAMMPS peer) | - | - |")
+            print(f"| {label} | {row['threads']} |{before} {row['epac_ns']:.1f} |{ratio} (no LAMMPS peer) | - | - |")
         for p in row["peers"]:
             note = "" if p["threaded"] else " (no threaded style: 1 thread)"
-            print(f"| {label} | {row['threads']} |{before} {row['epac_ns']:.1f} | {p['style']}{note} | "
+            print(f"| {label} | {row['threads']} |{before} {row['epac_ns']:.1f} |{ratio} {p['style']}{note} | "
                   f"{p['lammps_ns']:.1f} | {p['speedup']:.2f} |")
     if args.json:
         with open(args.json, "w") as f:

@@ -52,12 +52,13 @@ ImpactResult wall_impact(const Model& model, double R, double m, double v0, doub
     Kokkos::deep_copy(c.first, 0);
     Kokkos::deep_copy(c.second, 0);
   }
-  // Positions relative to the wall in double on the host; the kernel sees them in double too.
-  double z = R * (1 + 1e-3), vz = -v0;
+  // The absolute position is integrated in double, as a simulation far out does: its rounding at
+  // the offset is what the offset scan measures.
+  double z = offset + R * (1 + 1e-3), vz = -v0;
   ImpactResult r;
   bool touched = false;
   auto force = [&]() {
-    x(0, 2) = offset + z;
+    x(0, 2) = z;
     v(0, 2) = T(vz);
     Kokkos::deep_copy(p.x, x);
     Kokkos::deep_copy(p.v, v);
@@ -80,7 +81,7 @@ ImpactResult wall_impact(const Model& model, double R, double m, double v0, doub
     }
     if (fz != 0) touched = true;
     r.peak_force = std::max(r.peak_force, fz);
-    if (touched && fz == 0 && vz > 0 && z > R) {
+    if (touched && fz == 0 && vz > 0 && z - offset > R) {
       r.restitution = vz / v0;
       return r;
     }

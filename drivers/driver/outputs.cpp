@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iomanip>
+#include <limits>
 #include <stdexcept>
 
 namespace epac {
@@ -142,9 +143,12 @@ ParticlesWriter::ParticlesWriter(const std::string& path) : file_(path), out_(fi
 void ParticlesWriter::write(std::int64_t step, double time, const std::vector<double>& x, const std::vector<double>& y,
                             const std::vector<double>& z, const std::vector<double>& R, const std::vector<double>& R0,
                             const std::vector<double>& V) {
+  // Positions round-trip (17 digits): they are absolute, so 10 digits would keep only 1e-7 m of a
+  // coordinate at 1000 m, coarser than the overlaps of mm beads; the rest are relative to themselves.
+  constexpr int kPos = std::numeric_limits<double>::max_digits10;
   for (std::size_t k = 0; k < x.size(); ++k)
-    out_ << step << ',' << time << ',' << k << ',' << x[k] << ',' << y[k] << ',' << z[k] << ',' << R[k] << ',' << R0[k]
-         << ',' << V[k] << '\n';
+    out_ << step << ',' << time << ',' << k << ',' << std::setprecision(kPos) << x[k] << ',' << y[k] << ',' << z[k]
+         << ',' << std::setprecision(10) << R[k] << ',' << R0[k] << ',' << V[k] << '\n';
 }
 
 void write_summary_json(const std::string& path, const RunSummary& s) {

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -45,7 +46,10 @@ std::string vtp_text(const ParticleSnapshot& s) {
   for (const auto& e : s.extras) data_array(o, "Float64", e.first, 1, e.second);
   o << "      </PointData>\n"
     << "      <Points>\n";
+  // absolute positions round-trip (see ParticlesWriter)
+  o << std::setprecision(std::numeric_limits<double>::max_digits10);
   data_array(o, "Float64", "position", 3, s.x);  // m
+  o << std::setprecision(10);
   o << "      </Points>\n"
     << "      <Verts>\n";
   std::vector<std::int64_t> conn(n), offs(n);

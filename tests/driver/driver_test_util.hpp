@@ -4,6 +4,8 @@
 #include "driver/model_registry.hpp"
 #include "driver/scene.hpp"
 
+#include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -25,7 +27,8 @@ inline std::filesystem::path fresh_out_dir(const std::string& tag) {
   return dir;
 }
 
-// A CSV with a header line, as columns by name without the unit ("time [s]" -> "time"; numbers only).
+// A CSV with a header line, as columns by name without the unit ("time [s]" -> "time"); a text
+// cell (contacts.csv's wall_name) reads as NaN.
 inline std::map<std::string, std::vector<double>> read_csv_columns(const std::filesystem::path& path) {
   std::ifstream in(path);
   std::string line;
@@ -43,7 +46,9 @@ inline std::map<std::string, std::vector<double>> read_csv_columns(const std::fi
     std::string c;
     for (const auto& n : names) {
       std::getline(s, c, ',');
-      cols[n].push_back(std::stod(c));
+      char* end = nullptr;
+      const double v = std::strtod(c.c_str(), &end);
+      cols[n].push_back(end != c.c_str() ? v : std::nan(""));  // a text cell (wall_name): NaN
     }
   }
   return cols;

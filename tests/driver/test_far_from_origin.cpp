@@ -75,31 +75,6 @@ std::string packing(double X) {
   return t;
 }
 
-// A CSV as columns by name; text cells (contacts.csv's wall_name) read as NaN.
-std::map<std::string, std::vector<double>> read_columns(const fs::path& path) {
-  std::ifstream in(path);
-  std::string line;
-  std::getline(in, line);
-  std::vector<std::string> names;
-  {
-    std::stringstream s(line);
-    std::string c;
-    while (std::getline(s, c, ',')) names.push_back(driver::csv_column_name(c));
-  }
-  std::map<std::string, std::vector<double>> cols;
-  while (std::getline(in, line)) {
-    std::stringstream s(line);
-    std::string c;
-    for (const auto& n : names) {
-      std::getline(s, c, ',');
-      char* end = nullptr;
-      const double v = std::strtod(c.c_str(), &end);
-      cols[n].push_back(end != c.c_str() ? v : std::nan(""));
-    }
-  }
-  return cols;
-}
-
 struct Outputs {
   std::map<std::string, std::vector<double>> ts, contacts, particles;
 };
@@ -108,15 +83,12 @@ Outputs run(const std::string& text, const std::string& precision) {
   const auto s = test::run_scene_text(text, dir, precision);
   REQUIRE(s.status == "completed");
   Outputs o;
-  o.ts = read_columns(dir / "timeseries.csv");
-  if (fs::exists(dir / "contacts.csv")) o.contacts = read_columns(dir / "contacts.csv");
-  o.particles = read_columns(dir / "particles.csv");
+  o.ts = test::read_csv_columns(dir / "timeseries.csv");
+  if (fs::exists(dir / "contacts.csv")) o.contacts = test::read_csv_columns(dir / "contacts.csv");
+  o.particles = test::read_csv_columns(dir / "particles.csv");
   fs::remove_all(dir);
   return o;
 }
-
-// particles.csv keeps 10 significant digits: a coordinate X far out reads to 5e-10 |X|.
-double printed(double X) { return 5e-10 * std::max(1.0, 2.0 * X) + 5e-10 * 1e-3; }
 
 }  // namespace
 
@@ -155,8 +127,10 @@ TEST_CASE("epac-run: a driven pair far from the origin touches and pushes as at 
         const auto& x0 = ref.particles.at("x");
         const auto& st = o.particles.at("step");
         REQUIRE(x.size() == x0.size());
-        for (std::size_t r = 0; r < x.size(); ++r) CHECK(std::fabs((x[r] - X) - x0[r]) <= (st[r] + 1) * u + printed(X));
-        // they moved 5 um each: far more than the printed digits at 1000 m (1e-6 m)
+        // particles.csv prints positions to 17 digits: they read back exactly (with 10 digits this
+        // failed at 1000 m, where the print was 1e-7 m coarse)
+        for (std::size_t r = 0; r < x.size(); ++r) CHECK(std::fabs((x[r] - X) - x0[r]) <= (st[r] + 1) * u);
+        // they moved 5 um each
         CHECK(std::fabs((x.back() - X) - (x.front() - X)) > 4e-6);
       }
     }
@@ -197,8 +171,8 @@ TEST_CASE("epac-run: a packing on a floor far from the origin pushes it as at th
         REQUIRE(z.size() == z0.size());
         double wz = 0;
         for (std::size_t r = 0; r < z.size(); ++r) wz = std::max(wz, std::fabs((z[r] - 0.25 * X) - z0[r]));
-        INFO("worst z difference " << wz << " m");               // measured: the CSV's printed digits (5e-8 m at 250 m)
-        CHECK(wz <= 4e-3 * 2e-6 + 401 * u + printed(0.25 * X));  // 0.4% of the 2 um the spheres sink
+        INFO("worst z difference " << wz << " m");
+        CHECK(wz <= 4e-3 * 2e-6 + 401 * u);  // 0.4% of the 2 um the spheres sink
       }
     }
   }
