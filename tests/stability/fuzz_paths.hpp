@@ -20,8 +20,8 @@
 // origin the two differ by the coordinates' rounding, and the test must weigh the forces with
 // the overlaps they were computed at. (Positions rounded to float, as this test wrote them before,
 // move the overlap the law sees in steps of the coordinates' float spacing, not along the path's
-// grid: at size ratios near 100 that is up to 5e-6 R_min at the origin, and hysteretic cycles of
-// small amplitude then appear to create energy. docs/stability.md has the measurements.)
+// grid: at size ratios near 100 that spacing is up to 1e-5 R_min at the origin, and hysteretic
+// cycles of small amplitude then appear to create energy. docs/stability.md has the measurements.)
 // Parameters that `create` rejects are drawn again and counted.
 #include "stability_helpers.hpp"
 
