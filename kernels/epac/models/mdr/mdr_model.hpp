@@ -47,6 +47,7 @@
 #include <epac/models/mdr/detail/mdr_detachment.hpp>
 #include <epac/models/mdr/detail/mdr_evaluation.hpp>
 #include <epac/models/mdr/detail/mdr_pair_balance.hpp>
+#include <epac/models/mdr/detail/mdr_pair_equal.hpp>
 #include <epac/models/mdr/detail/mdr_pair_split.hpp>
 #include <epac/models/mdr/detail/mdr_side_force.hpp>
 #include <epac/models/mdr/mdr_history_layout.hpp>
@@ -99,6 +100,8 @@ struct Mdr {
   int nmat = 0;
   T xi = T(1);
   bool geometric_split = false;  // MdrOptions::pair_split == geometric (the authors' flat)
+  // MdrOptions::pair_split: 1 equal_pair, 2 equal_pair_balanced (detail/mdr_pair_equal.hpp), else 0
+  int equal_pair_split = 0;
   // MdrOptions::delta_max: 1 for MDR (19), delta_max shifted by R - R_o; 0 for the authors' running
   // maximum of delta (the sides then see no shift)
   T growth_in_max = T(1);
@@ -208,13 +211,25 @@ struct Mdr {
     const MdrPairConstants<T>& pc = pairs(g.pair);
     const bool grows = Eff::radius_growth && growth.bound();
     T critical = T(0);
+    T grown[2] = {T(0), T(0)}, R[2] = {e.Rs[0], e.Rs[1]};
+    for (int s = 0; s < e.nsides; ++s) grown[s] = grows ? growth_in_max * (e.Rs[s] - growth.radius0(e.part[s])) : T(0);
+    if (e.is_pair && equal_pair_split != 0) {
+      // the equivalent equal pair's sides (detail/mdr_pair_equal.hpp)
+      const bool b0 = e.swap;  // side 0 is material b when swapped
+      const MdrEqualPair<T> q =
+          mdr_equal_pair(e.Rs[0], e.Rs[1], (b0 ? pc.side_b : pc.side_a).E_eff, (b0 ? pc.side_a : pc.side_b).E_eff);
+      const T shift = grown[0] + grown[1];
+      for (int s = 0; s < 2; ++s) {
+        R[s] = q.R[s];
+        grown[s] = q.w[s] * shift;
+      }
+    }
     for (int s = 0; s < e.nsides; ++s) {
       const bool side_b = (s == 0) == e.swap;        // as in evaluate
       const MdrSideState<T> st = load_side(row, s);  // reads delta_o,max, yielded, c_A
-      const T grown = grows ? growth_in_max * (e.Rs[s] - growth.radius0(e.part[s])) : T(0);
       const T gamma_s = Eff::adhesion ? (side_b ? pc.gamma_b : pc.gamma_a) : T(0);
       critical +=
-          mdr_side_critical_overlap<Eff::plasticity>(side_b ? pc.side_b : pc.side_a, gamma_s, e.Rs[s], grown, st);
+          mdr_side_critical_overlap<Eff::plasticity>(side_b ? pc.side_b : pc.side_a, gamma_s, R[s], grown[s], st);
     }
     return critical;
   }
@@ -262,6 +277,9 @@ struct Mdr {
     m.nmat = static_cast<int>(materials.size());
     m.xi = T(opt.xi);
     m.geometric_split = opt.pair_split == MdrPairSplit::geometric;
+    m.equal_pair_split = opt.pair_split == MdrPairSplit::equal_pair            ? 1
+                         : opt.pair_split == MdrPairSplit::equal_pair_balanced ? 2
+                                                                               : 0;
     m.sides = Kokkos::View<MdrSideConstants<T>*, Device>("mdr.sides", m.nmat);
     m.pairs = Kokkos::View<MdrPairConstants<T>*, Device>("mdr.pairs", m.nmat * m.nmat);
     auto hs = Kokkos::create_mirror_view(m.sides);
@@ -420,6 +438,10 @@ struct Mdr {
                                                       detail::MdrEvaluation<T>& e) const {
     PairSides ps;
     set_pair_sides(ps, g, pc, e);
+    if (equal_pair_split != 0) {
+      equal_pair_sides<Write>(g, row, ps, e);
+      return;
+    }
     T d0 = e.dside[0];
     if (geometric_split) {
       ps(d0);
@@ -433,6 +455,36 @@ struct Mdr {
       e.res[s] = ps.r[s];
     }
     if (Write && Eff::plasticity && !geometric_split) store_balance_warm_start(g, row, ps, e, d0);
+  }
+
+  // MdrPairSplit::equal_pair(_balanced): the sides of the equivalent equal pair
+  // (detail/mdr_pair_equal.hpp), radius R'_s, depth w_s delta (equal_pair) or where F_0 = F_1
+  // (equal_pair_balanced: the balance solve with equal weights, first guess w_0 delta, once a side
+  // yielded the last pass's root moved along its tangent as for the balanced split).
+  template <bool Write>
+  KOKKOS_FORCEINLINE_FUNCTION void equal_pair_sides(const ContactGeometry<T>& g, const HistoryRow<T, Device>& row,
+                                                    PairSides& ps, detail::MdrEvaluation<T>& e) const {
+    const MdrEqualPair<T> q = mdr_equal_pair(e.Rs[0], e.Rs[1], ps.c[0]->E_eff, ps.c[1]->E_eff);
+    const T shift = e.growth_of[0] + e.growth_of[1];  // the pair's shift of delta_max, MDR (19)
+    for (int s = 0; s < 2; ++s) {
+      ps.R[s] = q.R[s];
+      ps.growth[s] = q.w[s] * shift;
+      ps.lambda[s] = T(0.5);  // equal forces: the mean force is each side's
+    }
+    e.dside[0] = q.w[0] * g.delta;
+    T d0 = e.dside[0];
+    if (equal_pair_split == 1) {
+      ps(d0);
+    } else {
+      const T guess = balance_guess(g, row, e);
+      d0 = mdr_balance_split(ps, g.delta, guess, q.R[0] + q.R[1]);
+    }
+    for (int s = 0; s < 2; ++s) {
+      e.dside[s] = ps.d[s];
+      e.st[s] = ps.st[s];
+      e.res[s] = ps.r[s];
+    }
+    if (Write && Eff::plasticity && equal_pair_split == 2) store_balance_warm_start(g, row, ps, e, d0);
   }
 
   // The balance solve's two sides: constants, surface energy shares, radii, growths, states.

@@ -48,7 +48,18 @@ enum class MdrPairSplit {
   // residuals below the largest overlap), with the mean of the two side forces. Not work-conjugate:
   // yielded pairs of unequal spheres returned more work than they took on ~1% of random cycles.
   // For comparisons with the authors' implementation (LAMMPS `granular mdr`).
-  geometric
+  geometric,
+  // Evaluated for issue 18 item 1 (detail/mdr_pair_equal.hpp): each side is a side of the
+  // equivalent equal pair, a sphere of radius R'_s = R* E_s/E* (same material: 2 R*) of its own
+  // material against the flat, at depth d_s = delta E*/E_s (same material: delta/2), the pair
+  // force the mean of the sides. Hertz with E* and R* and the similarity of same-material plastic
+  // pairs by construction; passive (a fixed linear split). Mixed yield stresses: the sides' forces
+  // differ (the flat is not in equilibrium).
+  equal_pair,
+  // The same sides, with the flat where their forces are equal, F_0(d_0) = F_1(delta - d_0) (the
+  // balance solve of detail/mdr_pair_balance.hpp with equal weights; d_s = delta E*/E_s is the
+  // elastic root and the first guess, exact for one material). Passive by construction.
+  equal_pair_balanced
 };
 
 // What delta_max is once the radius grows (MdrOptions::delta_max).

@@ -1,0 +1,52 @@
+#pragma once
+// Particle pairs in MDR as sides of the equivalent equal pair (MdrPairSplit::equal_pair and
+// equal_pair_balanced; evaluated for issue 18 item 1, docs/mdr-pair-split-evaluation.md).
+//
+// MDR Part I builds the law for one sphere against a rigid flat (Section 5.2, Fig. 6); two equal
+// spheres of one material are two such sides at delta/2 each. For two spheres of radii R_0, R_1
+// and plane-strain moduli E_0, E_1 (E_eff of each side, mdr_parameters.hpp) the contact sees only
+// the gap delta - r^2/(2 R*) and the composite compliance 1/E* = 1/E_0 + 1/E_1 as long as the
+// contact is small against both radii (the half-space picture of MDR's Appendix A). Each body's
+// surface then takes the share E*/E_s of the common normal displacement, so side s is a sphere of
+// its own material against the flat with
+//     depth    d_s  = w_s delta,          w_s = E*/E_s = E_o/(E_0 + E_1)   (w_0 + w_1 = 1)
+//     radius   R'_s = R*/w_s = R* (E_0 + E_1)/E_o                          (one material: 2 R*)
+// - elastic: the ellipse law (30)-(31) of side s is Hertz of R'_s, E_s at d_s to first order:
+//   F_s = 4/3 E_s sqrt(R'_s) d_s^(3/2) = 4/3 E* sqrt(R*) delta^(3/2) on both sides, and the contact
+//   radius a_s^2 = R'_s d_s = R* delta is the Hertz radius of the pair on both sides (the sides'
+//   areas, (42) elastic, are pi R* delta: the pair's);
+// - one material, any radius ratio: both sides are the equal pair of radius 2 R* at delta/2,
+//   identically (same constants, same depth, same history): the pair is the equal pair with the
+//   same R* in every regime, plastic (the similarity of same-material spheres), adhesive (JKR of
+//   R*, E* with the series share of Delta gamma) and unloading alike;
+// - per side, the cap cut by the flat holds the volume pi R'_s d_s^2 = (E*/E_s) pi R* delta^2 to
+//   leading order: the pair's lens volume pi R* delta^2, shared by compliance (half each for one
+//   material), and its plastic area pi (2 R'_s d_s - d_s^2) + c_A is the lens rim's 2 pi R* delta
+//   on both sides.
+// - delta_max of a side, MDR (19): the pair's overlap includes both particles' growths, so side
+//   s's share of that shift is w_s (growth_0 + growth_1).
+#include <epac/core/kokkos_compat.hpp>
+
+namespace epac {
+
+template <class T>
+struct MdrEqualPair {
+  T R[2];  // R'_s, the equivalent sides' radii
+  T w[2];  // w_s = E*/E_s, each side's share of the overlap
+};
+
+// R_s > 0, E_s > 0 (Mdr::create validates both).
+template <class T>
+KOKKOS_FORCEINLINE_FUNCTION MdrEqualPair<T> mdr_equal_pair(T R0, T R1, T E0, T E1) {
+  MdrEqualPair<T> q;
+  const T inv_E = T(1) / (E0 + E1);
+  q.w[0] = E1 * inv_E;
+  q.w[1] = E0 * inv_E;
+  const T R_star = R0 * R1 / (R0 + R1);
+  // R*/w_s without dividing by a tiny w: R* (E_0 + E_1)/E_o
+  q.R[0] = R_star * (E0 + E1) / E1;
+  q.R[1] = R_star * (E0 + E1) / E0;
+  return q;
+}
+
+}  // namespace epac
