@@ -218,11 +218,7 @@ struct Mdr {
       const bool b0 = e.swap;  // side 0 is material b when swapped
       const MdrEqualPair<T> q =
           mdr_equal_pair(e.Rs[0], e.Rs[1], (b0 ? pc.side_b : pc.side_a).E_eff, (b0 ? pc.side_a : pc.side_b).E_eff);
-      const T shift = grown[0] + grown[1];
-      for (int s = 0; s < 2; ++s) {
-        R[s] = q.R[s];
-        grown[s] = q.w[s] * shift;
-      }
+      for (int s = 0; s < 2; ++s) R[s] = q.R[s];  // each side's own growth, as in equal_pair_sides
     }
     for (int s = 0; s < e.nsides; ++s) {
       const bool side_b = (s == 0) == e.swap;        // as in evaluate
@@ -458,20 +454,23 @@ struct Mdr {
   }
 
   // MdrPairSplit::equal_pair(_balanced): the sides of the equivalent equal pair
-  // (detail/mdr_pair_equal.hpp), radius R'_s, depth w_s delta (equal_pair) or where F_0 = F_1
-  // (equal_pair_balanced: the balance solve with equal weights, first guess w_0 delta, once a side
-  // yielded the last pass's root moved along its tangent as for the balanced split).
+  // (detail/mdr_pair_equal.hpp), radius R'_s, depth w_s delta_o + (R_s - R_o,s) (equal_pair: the
+  // approach delta_o = delta - both growths split by compliance, each particle's own growth on its
+  // own side, MDR (19) per side as for a flat that stays put while the particle grows, Appendix C)
+  // or where F_0 = F_1 (equal_pair_balanced: the balance solve with equal weights, that split as
+  // the first guess, once a side yielded the last pass's root moved along its tangent as for the
+  // balanced split). The growth caps (commit_side) are cut from the sides' spheres R'_s.
   template <bool Write>
   KOKKOS_FORCEINLINE_FUNCTION void equal_pair_sides(const ContactGeometry<T>& g, const HistoryRow<T, Device>& row,
                                                     PairSides& ps, detail::MdrEvaluation<T>& e) const {
     const MdrEqualPair<T> q = mdr_equal_pair(e.Rs[0], e.Rs[1], ps.c[0]->E_eff, ps.c[1]->E_eff);
-    const T shift = e.growth_of[0] + e.growth_of[1];  // the pair's shift of delta_max, MDR (19)
     for (int s = 0; s < 2; ++s) {
       ps.R[s] = q.R[s];
-      ps.growth[s] = q.w[s] * shift;
+      e.R_cap[s] = q.R[s];
       ps.lambda[s] = T(0.5);  // equal forces: the mean force is each side's
     }
-    e.dside[0] = q.w[0] * g.delta;
+    // (ps.growth[s] = e.growth_of[s], set_pair_sides: each side's own growth)
+    e.dside[0] = q.w[0] * (g.delta - e.growth_of[0] - e.growth_of[1]) + e.growth_of[0];
     T d0 = e.dside[0];
     if (equal_pair_split == 1) {
       ps(d0);
@@ -584,10 +583,11 @@ struct Mdr {
       const bool plastic_loading = r.plastic && r.loading && r.F > T(0);
       if (growth_terms.enabled)
         mdr_growth_add_side(growth, growth_terms.access(e.is_pair, g.contact, s), e.part[s], e.R0s[s], c.inv_3kappa,
-                            r.F, e.dside[s], e.Rs[s], plastic_loading, r.plastic, st.delta_o_prev, st.eps_prev);
+                            r.F, e.dside[s], e.Rs[s], plastic_loading, r.plastic, st.delta_o_prev, st.eps_prev,
+                            e.R_cap[s]);
       else
         mdr_growth_add_side(growth, growth.sums.scatter.access(), e.part[s], e.R0s[s], c.inv_3kappa, r.F, e.dside[s],
-                            e.Rs[s], plastic_loading, r.plastic, st.delta_o_prev, st.eps_prev);
+                            e.Rs[s], plastic_loading, r.plastic, st.delta_o_prev, st.eps_prev, e.R_cap[s]);
     }
     store_changed(row, s, e.before[s], st, r.plastic);
   }

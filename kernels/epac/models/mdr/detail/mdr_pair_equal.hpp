@@ -23,8 +23,13 @@
 //   leading order: the pair's lens volume pi R* delta^2, shared by compliance (half each for one
 //   material), and its plastic area pi (2 R'_s d_s - d_s^2) + c_A is the lens rim's 2 pi R* delta
 //   on both sides.
-// - delta_max of a side, MDR (19): the pair's overlap includes both particles' growths, so side
-//   s's share of that shift is w_s (growth_0 + growth_1).
+// - radius growth, MDR (19) and (37): the compliance split applies to the approach
+//   delta_o = delta - (R_0 - R_o,0) - (R_1 - R_o,1); each particle's own growth goes to its own
+//   side (d_s = w_s delta_o + R_s - R_o,s, the flat staying put while the particle grows, as
+//   Appendix C's rigid flats and the authors' sides), and (37)'s cap of side s is cut from the
+//   sphere R'_s (Mdr::commit_side, mdr_growth_add_side's R_cap): the particle's compliance share of
+//   the lens, its base the lens rim. Equal spheres of one material: R'_s = R, exactly (37) as the
+//   authors apply it.
 #include <epac/core/kokkos_compat.hpp>
 
 namespace epac {
