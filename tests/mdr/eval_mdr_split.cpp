@@ -20,6 +20,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <limits>
+#include <string>
 #include <vector>
 
 using namespace epac;
@@ -34,6 +35,12 @@ using MA = Mdr<T, Effects<kPlasticity | kAdhesion>, D>;
 
 const MdrPairSplit kSplits[] = {MdrPairSplit::balanced, MdrPairSplit::geometric, MdrPairSplit::equal_pair,
                                 MdrPairSplit::equal_pair_balanced};
+const char* split_name(MdrPairSplit s);
+// EVAL_SPLITS=<text>: the fuzz runs only the splits whose name contains it (e.g. "equal")
+bool fuzz_this(MdrPairSplit s) {
+  const char* only = std::getenv("EVAL_SPLITS");
+  return !only || std::string(split_name(s)).find(only) != std::string::npos;
+}
 const char* split_name(MdrPairSplit s) {
   switch (s) {
     case MdrPairSplit::balanced:
@@ -198,6 +205,7 @@ TEST_CASE("eval (c): random closed cycles that create energy (the CI fuzz genera
   const long n = env ? std::atol(env) : 5000;
   std::printf("\n(c) %ld fuzz paths per split (a wall and a pair each; the seed of the CI's mdr section)\n", n);
   for (MdrPairSplit sp : kSplits) {
+    if (!fuzz_this(sp)) continue;
     MakeMdrSplit<double>::split = sp;
     MakeMdrGrowthSplit<double>::split = sp;
     const FuzzCounts c = fuzz_paths<MakeMdrSplit<double>, double>(n, 4, 512, 1);
@@ -212,6 +220,25 @@ TEST_CASE("eval (c): random closed cycles that create energy (the CI fuzz genera
         "plastic pairs %ld of %ld (worst %.3g)\n",
         split_name(sp), g.nan, g.inf, g.energy_created, g.energy_checked, g.worst_energy, g.plastic_pair_energy_created,
         g.plastic_pair_checked, g.worst_plastic_pair);
+    std::fflush(stdout);
+  }
+}
+
+TEST_CASE("eval (c-float): random closed cycles that create energy", "[.eval][.fuzz]") {
+  const char* env = std::getenv("EVAL_FUZZ_PATHS");
+  const long n = env ? std::atol(env) : 5000;
+  std::printf("\n(c) float: %ld fuzz paths per split\n", n);
+  for (MdrPairSplit sp : kSplits) {
+    if (!fuzz_this(sp)) continue;
+    MakeMdrSplit<float>::split = sp;
+    MakeMdrGrowthSplit<float>::split = sp;
+    const FuzzCounts c = fuzz_paths<MakeMdrSplit<float>, float>(n, 8, 512, 1);
+    const FuzzCounts g = fuzz_paths<MakeMdrGrowthSplit<float>, float>(n, 10, 512, 1);
+    std::printf(
+        "%-20s mdr NaN %ld Inf %ld created %ld of %ld (worst %.3g), plastic pairs %ld of %ld; mdr+growth NaN %ld "
+        "Inf %ld created %ld of %ld (worst %.3g)\n",
+        split_name(sp), c.nan, c.inf, c.energy_created, c.energy_checked, c.worst_energy, c.plastic_pair_energy_created,
+        c.plastic_pair_checked, g.nan, g.inf, g.energy_created, g.energy_checked, g.worst_energy);
     std::fflush(stdout);
   }
 }
@@ -345,4 +372,35 @@ TEST_CASE("eval: adhesive pairs, pull-off against JKR and against the equal pair
     const double R1 = 5 * R0, Rs = R0 * R1 / (R0 + R1);
     std::printf(" %14.4f\n", pulloff(pm, R0, R1, 0.05 * Rs) / pulloff(pm, 2 * Rs, 2 * Rs, 0.05 * Rs));
   }
+}
+
+TEST_CASE("eval: radius growth of one-material pairs (volume each particle gains)", "[.eval]") {
+  // E/Y 200, nu 0.3, radius ratio 5 and 2, delta_o/R* to 0.3 in 2000 steps (the
+  // centre distance from the initial radii, growth adding to the overlap as in a packing): the
+  // volume 4/3 pi (R^3 - R_o^3) each particle gained, over the lens volume at the largest delta_o
+  // (two radical-plane caps of the initial radii); reference: each particle of the equal pair 2R*
+  using MG = Mdr<T, Effects<kPlasticity | kRadiusGrowth>, D>;
+  const double E = 1e8, R0 = 1e-3;
+  auto cap = [](double d, double R) { return M_PI * d * d * (3 * R - d) / 3; };
+  std::printf("\nradius growth, one material E/Y 200, delta_o/R* to 0.3: volume gained / lens volume\n");
+  std::printf("%-20s %24s %24s\n", "split", "ratio 2: small / large", "ratio 5: small / large");
+  for (int ref = 0; ref < 2; ++ref)
+    for (MdrPairSplit sp : kSplits) {
+      if (ref && sp != MdrPairSplit::balanced) continue;
+      std::printf("%-20s", ref ? "equal pair 2R*" : split_name(sp));
+      for (double r : {2.0, 5.0}) {
+        const double R1 = r * R0, Rs = R0 * R1 / (R0 + R1), dmax = 0.3 * Rs;
+        const double a = ref ? 2 * Rs : R0, b = ref ? 2 * Rs : R1;
+        const MG model = MG::create({mdr_material(E, 0.3, E / 200)}, opts(sp));
+        std::vector<double> path;
+        append_ramp(path, 0.0, dmax, 2000);
+        const PairTrace t = run_pair_path<MG, D>(model, a, b, 0, path);
+        const double h0 = double(mdr_side0_height(dmax, a, b));
+        const double lens = cap(h0, a) + cap(dmax - h0, b);
+        const double V0 = 4.0 / 3 * M_PI * (std::pow(t.R0.back(), 3) - a * a * a);
+        const double V1 = 4.0 / 3 * M_PI * (std::pow(t.R1.back(), 3) - b * b * b);
+        std::printf("      %8.4f / %8.4f", V0 / lens, V1 / lens);
+      }
+      std::printf("\n");
+    }
 }
