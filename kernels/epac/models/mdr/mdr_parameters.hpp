@@ -51,7 +51,8 @@ enum class MdrPairSplit {
   geometric,
   // Evaluated for issue 18 item 1 (detail/mdr_pair_equal.hpp): each side is a side of the
   // equivalent equal pair, a sphere of radius R'_s = R* E_s/E* (same material: 2 R*) of its own
-  // material against the flat, at depth d_s = delta E*/E_s (same material: delta/2), the pair
+  // material against the flat, at depth d_s = delta E*/E_s (same material: delta/2; with radius
+  // growth the approach is split so and each particle's growth added to its own side), the pair
   // force the mean of the sides. Hertz with E* and R* and the similarity of same-material plastic
   // pairs by construction; passive (a fixed linear split). Mixed yield stresses: the sides' forces
   // differ (the flat is not in equilibrium).
