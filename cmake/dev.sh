@@ -4,6 +4,11 @@
 #   bash cmake/dev.sh run [SCENE.toml] [epac-run options]   runs the driver (default scene)
 #   bash cmake/dev.sh test [ctest options]                  builds and runs every test
 #   bash cmake/dev.sh bench [benchmark options]             runs the contact-kernel benchmarks
+#   bash cmake/dev.sh fuzz [Catch2 options]                 builds test_fuzz and runs the long fuzz
+#       (docs/stability.md): EPAC_FUZZ_PATHS random paths per law and precision, each a wall and
+#       a pair contact (default 500000: 1e6 contact paths), all five laws in double and float;
+#       EPAC_FUZZ_LAWS=mdr runs only the laws whose name contains it. About 50 min of CPU on one
+#       core (67 min wall on this project's busy 2-core machine): EPAC_THREADS=1 bash cmake/dev.sh fuzz
 #   bash cmake/dev.sh device                                builds for this machine's NVIDIA GPU and
 #       runs the test suite, the benchmarks and the scaling script on it (cmake/device-run.sh)
 # `test` includes the GPU compile check (ctest device_compile_check: every target compiled and
@@ -56,8 +61,14 @@ case "$cmd" in
     cmake --build "$build" -j "$jobs" --target epac-bench-contacts
     exec "$build/bench/epac-bench-contacts" "$@"
     ;;
+  fuzz)
+    cmake --build "$build" -j "$jobs" --target test_fuzz
+    export EPAC_FUZZ_PATHS="${EPAC_FUZZ_PATHS:-500000}"
+    echo "[epac] long fuzz: $EPAC_FUZZ_PATHS paths per law and precision, $OMP_NUM_THREADS thread(s)"
+    exec "$build/tests/stability/test_fuzz" "[.long]" "$@"
+    ;;
   *)
-    echo "usage: bash cmake/dev.sh run [SCENE.toml] [options] | test [ctest options] | bench [options] | device" >&2
+    echo "usage: bash cmake/dev.sh run [SCENE.toml] [options] | test [ctest options] | bench [options] | fuzz [options] | device" >&2
     exit 2
     ;;
 esac

@@ -11,6 +11,17 @@
 //     whose force is a function of the overlap (elastic) the trapezoid sums telescope: the work
 //     returned equals the work put in to round-off, and any hysteresis that returns more (energy
 //     created) shows; dissipative laws must return less.
+// Every contact (each path's wall contact and its pair) sits at its own random offset from the
+// origin (0, or 1e-3 to 1e3 m log-uniformly, along a random direction) with a random wall normal
+// or pair axis, its positions written in double (Particles::x is double for every T): at 1e3 m
+// float's spacing of a coordinate (6e-5 m) is far coarser than most overlaps, double's (1.1e-13 m)
+// is not. The energy sums take the overlap the kernel computes from those positions (the same
+// double expression as contact_forces.hpp), not the overlap the path asked for: far from the
+// origin the two differ by the coordinates' rounding, and the test must weigh the forces with
+// the overlaps they were computed at. (Positions rounded to float, as this test wrote them before,
+// move the overlap the law sees in steps of the coordinates' float spacing, not along the path's
+// grid: at size ratios near 100 that spacing is up to 1e-5 R_min at the origin, and hysteretic
+// cycles of small amplitude then appear to create energy. docs/stability.md has the measurements.)
 // Parameters that `create` rejects are drawn again and counted.
 #include "stability_helpers.hpp"
 
@@ -57,7 +68,27 @@ struct FuzzRng {
   double u(double a = 0, double b = 1) { return std::uniform_real_distribution<double>(a, b)(g); }
   double log_u(double a, double b) { return std::pow(10.0, u(std::log10(a), std::log10(b))); }
   int i(int a, int b) { return std::uniform_int_distribution<int>(a, b)(g); }
+  Vec3<double> unit() {  // uniform on the sphere
+    const double z = u(-1, 1), phi = u(0, 6.283185307179586), s = std::sqrt(std::max(0.0, 1 - z * z));
+    return {s * std::cos(phi), s * std::sin(phi), z};
+  }
+  // Distance of a contact from the origin: 0 (one draw in 7) or 1e-3 to 1e3 m log-uniformly,
+  // along a random direction.
+  Vec3<double> offset() {
+    const double d = i(0, 6) == 0 ? 0.0 : log_u(1e-3, 1e3);
+    return d * unit();
+  }
 };
+
+// The contact geometry as the kernels compute it from double positions (contact_forces.hpp,
+// pair_geometry_exact and wall_geometry_exact), for the energy sums.
+inline double fuzz_pair_overlap(double Ri, double Rj, const Vec3<double>& xi, const Vec3<double>& xj) {
+  return Ri + Rj - norm(xi - xj);
+}
+inline double fuzz_wall_overlap(double Ri, const Vec3<double>& xi, const Vec3<double>& point,
+                                const Vec3<double>& normal) {
+  return Ri - dot(xi - point, normal);
+}
 
 // A random material of the ranges: E 1e5-1e12 Pa, nu -0.5-0.49, E/Y 1.5-1e5 (or no
 // yield), surface energy up to E R (0 when !adhesive).
@@ -99,6 +130,7 @@ FuzzCounts fuzz_paths(long n_paths, std::uint64_t seed, int group = 512, int ref
   using Model = typename Make::M;
   FuzzCounts c;
   FuzzRng r(seed);
+  FuzzRng rg(seed ^ 0x6a09e667f3bcc909ULL);                  // geometry: offsets and directions
   const bool is_nan = std::string(Make::name) == "nan2022";  // Nan 2022 needs a yield pressure (k_el)
   const bool is_mdr = std::string(Make::name).rfind("mdr", 0) == 0;
   const double tol_energy = 1e-9;
@@ -129,7 +161,7 @@ FuzzCounts fuzz_paths(long n_paths, std::uint64_t seed, int group = 512, int ref
     }
     // paths
     Particles<T, D> p(3 * G, "fuzz");
-    Walls<T, D> w(1, "fuzz_wall");
+    Walls<T, D> w(G, "fuzz_wall");  // one per path, at the wall contact's offset
     ContactList<D> wc(G, "fuzz_wc"), pc(G, "fuzz_pc");
     ContactHistory<T, D> wh(G, Model::history_size), ph(G, Model::history_size);
     ContactOutputs<T, D> ow, op;
@@ -138,7 +170,13 @@ FuzzCounts fuzz_paths(long n_paths, std::uint64_t seed, int group = 512, int ref
     std::vector<double> Ra(G), Rb(G), rho(G), Eg(G);
     std::vector<int> energy(G), plastic_pair(G, 0), mA(G), mB(G);
     std::vector<std::vector<double>> Fp(G);
-    std::vector<std::vector<double>> dw(G), dp(G);  // overlap per step, wall and pair
+    std::vector<std::vector<double>> dw(G), dp(G);  // overlap per step asked for, wall and pair
+    std::vector<std::vector<double>> rp(G);         // pair overlap per step as the kernel computes it
+    // geometry: wall point and normal (normal as the kernel reads it: T, then double), pair
+    // position and axis; drawn from their own generator, so that materials, radii, paths,
+    // velocities and steps are those the same seed drew before the offsets existed
+    std::vector<Vec3<double>> w_point(G), w_normal(G), p_point(G), p_axis(G);
+    std::vector<double> Ra_T(G), Rb_T(G);  // radii as stored (T)
     int S = 0;
     {
       auto R0 = Kokkos::create_mirror_view(p.radius0);
@@ -170,7 +208,13 @@ FuzzCounts fuzz_paths(long n_paths, std::uint64_t seed, int group = 512, int ref
         plastic_pair[i] = std::isfinite(mats[ma].yield_stress) || std::isfinite(mats[mb].yield_stress);
         Eg[i] = std::min(mats[ma].youngs_modulus, mats[mb].youngs_modulus);
         wf(i) = 3 * i;
-        ws(i) = 0;
+        ws(i) = i;
+        Ra_T[i] = double(T(Ra[i]));
+        Rb_T[i] = double(T(Rb[i]));
+        w_point[i] = rg.offset();
+        w_normal[i] = vec_cast<double>(vec_cast<T>(rg.unit()));
+        p_point[i] = rg.offset();
+        p_axis[i] = rg.unit();
         pf(i) = 3 * i + 1;
         ps(i) = 3 * i + 2;
         const double Rmin = std::min(Ra[i], Rb[i]);
@@ -212,9 +256,14 @@ FuzzCounts fuzz_paths(long n_paths, std::uint64_t seed, int group = 512, int ref
       Kokkos::deep_copy(pc.first, pf);
       Kokkos::deep_copy(pc.second, ps);
       auto wn = Kokkos::create_mirror_view(w.normal);
-      Kokkos::deep_copy(wn, T(0));
-      wn(0, 2) = T(1);
+      auto wp = Kokkos::create_mirror_view(w.point);
+      for (int i = 0; i < G; ++i)
+        for (int d = 0; d < 3; ++d) {
+          wp(i, d) = w_point[i][d];
+          wn(i, d) = T(w_normal[i][d]);  // exact: w_normal holds T values
+        }
       Kokkos::deep_copy(w.normal, wn);
+      Kokkos::deep_copy(w.point, wp);
       Kokkos::deep_copy(w.material, wall_mat);
     }
     if constexpr (Model::effects::radius_growth) model.bind(p);
@@ -222,12 +271,12 @@ FuzzCounts fuzz_paths(long n_paths, std::uint64_t seed, int group = 512, int ref
     auto v = Kokkos::create_mirror_view(p.v);
     auto om = Kokkos::create_mirror_view(p.omega);
     std::vector<double> Win(2 * G, 0.0), Wout(2 * G, 0.0), Fprev(2 * G, 0.0);
-    std::vector<int> bad(G, 0);  // 1 NaN, 2 Inf
+    std::vector<double> delta(2 * G, 0.0), delta_prev(2 * G, 0.0);  // kernel's overlaps, wall and pair
+    std::vector<int> bad(G, 0);                                     // 1 NaN, 2 Inf
     const double tc_min = 3.0 * Rg * std::sqrt(2500.0 / 1e12);
     double dt_held = 0;
     for (int s = 0; s < S; ++s) {
       const bool draw = s % refine == 0;
-      Kokkos::deep_copy(x, T(0));
       if (draw) {
         Kokkos::deep_copy(v, T(0));
         Kokkos::deep_copy(om, T(0));
@@ -235,13 +284,18 @@ FuzzCounts fuzz_paths(long n_paths, std::uint64_t seed, int group = 512, int ref
       for (int i = 0; i < G; ++i) {
         const int k =
             std::min<int>(energy[i] ? s : s / refine, static_cast<int>(dw[i].size()) - 1);  // shorter paths hold
-        const double y = 10.0 * i;  // apart: only listed contacts act
-        x(3 * i, 0) = T(-5.0);
-        x(3 * i, 1) = T(y);
-        x(3 * i, 2) = T(Ra[i] - dw[i][k]);
-        x(3 * i + 1, 1) = T(y);
-        x(3 * i + 2, 1) = T(y);
-        x(3 * i + 2, 0) = T(Ra[i] + Rb[i] - dp[i][k]);
+        // only listed contacts act: contacts of different paths may overlap in space
+        const Vec3<double> xw = w_point[i] + (Ra_T[i] - dw[i][k]) * w_normal[i];
+        const Vec3<double> xa = p_point[i];
+        const Vec3<double> xb = p_point[i] + (Ra_T[i] + Rb_T[i] - dp[i][k]) * p_axis[i];
+        for (int d = 0; d < 3; ++d) {
+          x(3 * i, d) = xw[d];
+          x(3 * i + 1, d) = xa[d];
+          x(3 * i + 2, d) = xb[d];
+        }
+        // radii: R0 (a cycle during which a radius grew is not checked)
+        delta[2 * i] = fuzz_wall_overlap(Ra_T[i], xw, w_point[i], w_normal[i]);
+        delta[2 * i + 1] = fuzz_pair_overlap(Ra_T[i], Rb_T[i], xa, xb);
         if (!energy[i] && draw)
           for (int q = 0; q < 3; ++q)
             for (int d = 0; d < 3; ++d) {
@@ -267,7 +321,6 @@ FuzzCounts fuzz_paths(long n_paths, std::uint64_t seed, int group = 512, int ref
       auto fp = to_host(op.normal_force);
       c.contacts += 2 * G;
       for (int i = 0; i < G; ++i) {
-        const int k = std::min<int>(energy[i] ? s : s / refine, static_cast<int>(dw[i].size()) - 1);
         auto check = [&](double val) {
           if (std::isnan(val))
             bad[i] = bad[i] ? bad[i] : 1;
@@ -285,16 +338,21 @@ FuzzCounts fuzz_paths(long n_paths, std::uint64_t seed, int group = 512, int ref
         }
         if (energy[i] && s > 0 && s < static_cast<int>(dw[i].size())) {
           const double f[2] = {double(fw(i)), double(fp(i))};
-          const double dd[2] = {dw[i][k] - dw[i][k - 1], dp[i][k] - dp[i][k - 1]};
+          const double dd[2] = {delta[2 * i] - delta_prev[2 * i], delta[2 * i + 1] - delta_prev[2 * i + 1]};
           for (int e = 0; e < 2; ++e) {
             const double work = 0.5 * (f[e] + Fprev[2 * i + e]) * dd[e];
             (work > 0 ? Win : Wout)[2 * i + e] += std::fabs(work);
           }
         }
-        if (energy[i] && s < static_cast<int>(dw[i].size())) Fp[i].push_back(fp(i));
+        if (energy[i] && s < static_cast<int>(dw[i].size())) {
+          Fp[i].push_back(fp(i));
+          rp[i].push_back(delta[2 * i + 1]);
+        }
         if (energy[i]) {
           Fprev[2 * i] = fw(i);
           Fprev[2 * i + 1] = fp(i);
+          delta_prev[2 * i] = delta[2 * i];
+          delta_prev[2 * i + 1] = delta[2 * i + 1];
         }
       }
     }
@@ -325,7 +383,7 @@ FuzzCounts fuzz_paths(long n_paths, std::uint64_t seed, int group = 512, int ref
               std::printf("PAIR rel %.4g Ra %.4g Rb %.4g EA %.4g nuA %.3g YA %.4g EB %.4g nuB %.3g YB %.4g\n", rel,
                           Ra[i], Rb[i], mats[mA[i]].youngs_modulus, mats[mA[i]].poisson_ratio, mats[mA[i]].yield_stress,
                           mats[mB[i]].youngs_modulus, mats[mB[i]].poisson_ratio, mats[mB[i]].yield_stress);
-              for (std::size_t q = 0; q < Fp[i].size(); ++q) std::printf("  %.6g %.6g\n", dp[i][q], Fp[i][q]);
+              for (std::size_t q = 0; q < Fp[i].size(); ++q) std::printf("  %.6g %.6g\n", rp[i][q], Fp[i][q]);
             }
           }
         }
@@ -336,7 +394,9 @@ FuzzCounts fuzz_paths(long n_paths, std::uint64_t seed, int group = 512, int ref
           if (c.first_failure.empty())
             c.first_failure = std::string(Make::name) + ": energy created " + std::to_string(rel) + " on the " +
                               (e ? "pair" : "wall") + " of path " + std::to_string(c.paths + i) + ", E_min " +
-                              std::to_string(Eg[i]) + ", Ra " + std::to_string(Ra[i]) + ", Rb " + std::to_string(Rb[i]);
+                              std::to_string(Eg[i]) + ", Ra " + std::to_string(Ra[i]) + ", Rb " +
+                              std::to_string(Rb[i]) + ", at " + std::to_string(norm(e ? p_point[i] : w_point[i])) +
+                              " m from the origin";
         }
       }
     }

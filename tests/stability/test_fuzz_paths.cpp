@@ -1,11 +1,13 @@
 // Fuzz of every law over random pair and wall paths (fuzz_paths.hpp): no NaN, no Inf, no energy
 // created on closed quasi-static cycles. The CI test runs 5000 paths (a wall and a pair path each:
 // 1e4 contact paths) per law and precision; the hidden "[.long]" test runs EPAC_FUZZ_PATHS of them
-// (default 1e5) and prints the counts:  EPAC_FUZZ_PATHS=100000 test_fuzz "[.long]".
+// (default 5e5: 1e6 contact paths) and prints the counts: `bash cmake/dev.sh fuzz`, or
+// EPAC_FUZZ_PATHS=500000 test_fuzz "[.long]".
 #include "fuzz_paths.hpp"
 
 #include <catch2/catch.hpp>
 
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -38,13 +40,15 @@ void report_law(long n, std::uint64_t seed) {
   const char* laws = std::getenv("EPAC_FUZZ_LAWS");
   if (laws && std::string(Make<T>::name).find(laws) == std::string::npos) return;
   const char* ref = std::getenv("EPAC_FUZZ_REFINE");
+  const auto start = std::chrono::steady_clock::now();
   const FuzzCounts c = run_law<Make, T>(n, seed, ref ? std::max(1, std::atoi(ref)) : 1);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::printf(
       "%-14s %-6s paths %8ld contacts %10ld rejected %6ld NaN %ld Inf %ld energy created %ld of %ld "
-      "(worst (out-in)/in %.3g); MDR plastic pairs: energy created %ld of %ld (worst %.3g)%s%s\n",
+      "(worst (out-in)/in %.3g); MDR plastic pairs: energy created %ld of %ld (worst %.3g); %.0f s%s%s\n",
       Make<T>::name, sizeof(T) == 4 ? "float" : "double", c.paths, c.contacts, c.rejected, c.nan, c.inf,
       c.energy_created, c.energy_checked, c.worst_energy, c.plastic_pair_energy_created, c.plastic_pair_checked,
-      c.worst_plastic_pair, c.first_failure.empty() ? "" : "; first: ", c.first_failure.c_str());
+      c.worst_plastic_pair, seconds, c.first_failure.empty() ? "" : "; first: ", c.first_failure.c_str());
   std::fflush(stdout);
   CHECK(c.nan == 0);
   CHECK(c.inf == 0);
@@ -62,9 +66,9 @@ TEMPLATE_TEST_CASE("fuzz: random pair and wall paths stay finite and create no e
   SECTION("mdr+growth") { check_law<MakeMdrGrowth, TestType>(kCiPaths, 5); }
 }
 
-TEST_CASE("fuzz, long: EPAC_FUZZ_PATHS random paths per law and precision (default 1e5)", "[.long]") {
+TEST_CASE("fuzz, long: EPAC_FUZZ_PATHS random paths per law and precision (default 5e5)", "[.long]") {
   const char* env = std::getenv("EPAC_FUZZ_PATHS");
-  const long n = env ? std::atol(env) : 100000;
+  const long n = env ? std::atol(env) : 500000;  // each a wall and a pair path: 1e6 contact paths
   const std::uint64_t seed = 1000;
   report_law<MakeHM, double>(n, seed + 1);
   report_law<MakeHM, float>(n, seed + 2);
