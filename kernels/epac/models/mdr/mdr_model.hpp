@@ -99,9 +99,8 @@ struct Mdr {
   Kokkos::View<MdrPairConstants<T>*, Device> pairs;  // per material pair, mat_i * nmat + mat_j
   int nmat = 0;
   T xi = T(1);
-  bool geometric_split = false;  // MdrOptions::pair_split == geometric (the authors' flat)
-  // MdrOptions::pair_split: 1 equal_pair, 2 equal_pair_balanced (detail/mdr_pair_equal.hpp), else 0
-  int equal_pair_split = 0;
+  bool geometric_split = false;   // MdrOptions::pair_split == geometric (the authors' flat)
+  bool equal_pair_split = false;  // MdrOptions::pair_split == equal_pair (detail/mdr_pair_equal.hpp)
   // MdrOptions::delta_max: 1 for MDR (19), delta_max shifted by R - R_o; 0 for the authors' running
   // maximum of delta (the sides then see no shift)
   T growth_in_max = T(1);
@@ -213,11 +212,14 @@ struct Mdr {
     T critical = T(0);
     T grown[2] = {T(0), T(0)}, R[2] = {e.Rs[0], e.Rs[1]};
     for (int s = 0; s < e.nsides; ++s) grown[s] = grows ? growth_in_max * (e.Rs[s] - growth.radius0(e.part[s])) : T(0);
-    if (e.is_pair && equal_pair_split != 0) {
+    if (e.is_pair && equal_pair_split) {
       // the equivalent equal pair's sides (detail/mdr_pair_equal.hpp)
       const bool b0 = e.swap;  // side 0 is material b when swapped
-      const MdrEqualPair<T> q =
-          mdr_equal_pair(e.Rs[0], e.Rs[1], (b0 ? pc.side_b : pc.side_a).E_eff, (b0 ? pc.side_a : pc.side_b).E_eff);
+      T R0o[2] = {e.Rs[0], e.Rs[1]};
+      if (grows)
+        for (int s = 0; s < 2; ++s) R0o[s] = growth.radius0(e.part[s]);
+      const MdrEqualPair<T> q = mdr_equal_pair_grown(
+          e.Rs[0], e.Rs[1], R0o[0], R0o[1], (b0 ? pc.side_b : pc.side_a).E_eff, (b0 ? pc.side_a : pc.side_b).E_eff);
       for (int s = 0; s < 2; ++s) R[s] = q.R[s];  // each side's own growth, as in equal_pair_sides
     }
     for (int s = 0; s < e.nsides; ++s) {
@@ -273,9 +275,7 @@ struct Mdr {
     m.nmat = static_cast<int>(materials.size());
     m.xi = T(opt.xi);
     m.geometric_split = opt.pair_split == MdrPairSplit::geometric;
-    m.equal_pair_split = opt.pair_split == MdrPairSplit::equal_pair            ? 1
-                         : opt.pair_split == MdrPairSplit::equal_pair_balanced ? 2
-                                                                               : 0;
+    m.equal_pair_split = opt.pair_split == MdrPairSplit::equal_pair;
     m.sides = Kokkos::View<MdrSideConstants<T>*, Device>("mdr.sides", m.nmat);
     m.pairs = Kokkos::View<MdrPairConstants<T>*, Device>("mdr.pairs", m.nmat * m.nmat);
     auto hs = Kokkos::create_mirror_view(m.sides);
@@ -290,6 +290,7 @@ struct Mdr {
                                  ? MdrPairConstants<T>{}
                                  : mdr_pair_constants<T>(materials[a], materials[b], opt.yield_onset,
                                                          opt.surface_energy_share, opt.damping);
+    for (int a = 0; a < m.nmat; ++a) hp(a * m.nmat + a).same_material = true;
     m.growth_in_max = opt.delta_max == MdrDeltaMax::running_max ? T(0) : T(1);
     m.authors_friction = opt.friction == MdrFriction::authors;
     m.k_t_authors = T(opt.friction == MdrFriction::authors ? opt.tangential_stiffness : 0.0);
@@ -434,8 +435,8 @@ struct Mdr {
                                                       detail::MdrEvaluation<T>& e) const {
     PairSides ps;
     set_pair_sides(ps, g, pc, e);
-    if (equal_pair_split != 0) {
-      equal_pair_sides<Write>(g, row, ps, e);
+    if (equal_pair_split) {
+      equal_pair_sides<Write>(g, row, pc, ps, e);
       return;
     }
     T d0 = e.dside[0];
@@ -453,17 +454,21 @@ struct Mdr {
     if (Write && Eff::plasticity && !geometric_split) store_balance_warm_start(g, row, ps, e, d0);
   }
 
-  // MdrPairSplit::equal_pair(_balanced): the sides of the equivalent equal pair
-  // (detail/mdr_pair_equal.hpp), radius R'_s, depth w_s delta_o + (R_s - R_o,s) (equal_pair: the
-  // approach delta_o = delta - both growths split by compliance, each particle's own growth on its
-  // own side, MDR (19) per side as for a flat that stays put while the particle grows, Appendix C)
-  // or where F_0 = F_1 (equal_pair_balanced: the balance solve with equal weights, that split as
-  // the first guess, once a side yielded the last pass's root moved along its tangent as for the
-  // balanced split). The growth caps (commit_side) are cut from the sides' spheres R'_s.
+  // MdrPairSplit::equal_pair: the sides of the equivalent equal pair (detail/mdr_pair_equal.hpp),
+  // radii R'_s, the flat where F_0 = F_1 (the balance solve with equal weights). First guess: the
+  // elastic root, the approach delta_o = delta - both growths split by compliance and each
+  // particle's own growth on its own side (MDR (19) per side, the flat staying put while the
+  // particle grows, Appendix C); it balances one material exactly in every regime (both sides are
+  // then the same side of the equal pair), so that pair needs one evaluation and no warm start.
+  // Two materials, once a side yielded: the last pass's root moved along its tangent, as for the
+  // balanced split. The growth caps (commit_side) are cut from the sides' spheres R'_s.
   template <bool Write>
   KOKKOS_FORCEINLINE_FUNCTION void equal_pair_sides(const ContactGeometry<T>& g, const HistoryRow<T, Device>& row,
-                                                    PairSides& ps, detail::MdrEvaluation<T>& e) const {
-    const MdrEqualPair<T> q = mdr_equal_pair(e.Rs[0], e.Rs[1], ps.c[0]->E_eff, ps.c[1]->E_eff);
+                                                    const MdrPairConstants<T>& pc, PairSides& ps,
+                                                    detail::MdrEvaluation<T>& e) const {
+    // (e.R0s: R_o with radius growth, else the radii: load_growth)
+    const MdrEqualPair<T> q =
+        mdr_equal_pair_grown(e.Rs[0], e.Rs[1], e.R0s[0], e.R0s[1], ps.c[0]->E_eff, ps.c[1]->E_eff);
     for (int s = 0; s < 2; ++s) {
       ps.R[s] = q.R[s];
       e.R_cap[s] = q.R[s];
@@ -471,19 +476,14 @@ struct Mdr {
     }
     // (ps.growth[s] = e.growth_of[s], set_pair_sides: each side's own growth)
     e.dside[0] = q.w[0] * (g.delta - e.growth_of[0] - e.growth_of[1]) + e.growth_of[0];
-    T d0 = e.dside[0];
-    if (equal_pair_split == 1) {
-      ps(d0);
-    } else {
-      const T guess = balance_guess(g, row, e);
-      d0 = mdr_balance_split(ps, g.delta, guess, q.R[0] + q.R[1]);
-    }
+    const T guess = pc.same_material ? e.dside[0] : balance_guess(g, row, e);
+    const T d0 = mdr_balance_split(ps, g.delta, guess, q.R[0] + q.R[1]);
     for (int s = 0; s < 2; ++s) {
       e.dside[s] = ps.d[s];
       e.st[s] = ps.st[s];
       e.res[s] = ps.r[s];
     }
-    if (Write && Eff::plasticity && equal_pair_split == 2) store_balance_warm_start(g, row, ps, e, d0);
+    if (Write && Eff::plasticity && !pc.same_material) store_balance_warm_start(g, row, ps, e, d0);
   }
 
   // The balance solve's two sides: constants, surface energy shares, radii, growths, states.

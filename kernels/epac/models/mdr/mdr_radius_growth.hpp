@@ -23,7 +23,7 @@
 //                    - pi d(delta_o) (2 delta_o R_o - delta_o^2 + R^2 - R_o^2)
 //     denominator += 2 pi R (delta_o + R - R_o)
 //   plastic_loading rule (default, authors' code): sides in plastic loading (yielded, delta at
-//   delta_max, F > 0); all_contacts rule (paper): every yielded side with delta > 0, and Delta V^e =
+//   delta_max, F > 0); yielded_contacts rule (Appendix E's sum, yielded sides only): every yielded side with delta > 0, and Delta V^e =
 //   -(V_new - V_old) of the whole particle, added in the update kernel. epac leaves out the sides
 //   that have not yielded: (37) conserves the volume of plastic (incompressible) deformation, and
 //   an elastic contact's cap is taken up elastically (Hertz). Counting them, the cap-volume term
@@ -90,7 +90,7 @@ struct MdrGrowthState {
 // (gs.sums.scatter.access()); R0: the particle's R_o; inv_3kappa: 1/(3 kappa) of its material;
 // F: the side's MDR force (no damping); delta: its apparent overlap; R: the particle's current
 // radius; plastic_loading: yielded, delta at its running maximum and F > 0; yielded: the side is
-// fully plastic (all_contacts rule). Updates the side's history (delta_o_prev, eps_prev).
+// fully plastic (yielded_contacts rule). Updates the side's history (delta_o_prev, eps_prev).
 // R_cap: the radius of the sphere whose cap the side cuts (default R; MdrPairSplit::equal_pair:
 // the side's equivalent radius R'_s, so that the cap is the particle's compliance share of the
 // pair's lens and its base the lens rim, detail/mdr_pair_equal.hpp), the same growth R - R_o.
@@ -150,7 +150,7 @@ void mdr_update_radii(const MdrGrowthState<T, Device>& gs, int count = -1) {
         const T V_new = V0 * factor;
         // Delta V^e of the whole particle, only when a side contributes (den > 0: each adds
         // 2 pi R delta > 0): else an elastic particle's volume recovering on unloading grew R
-        if (s.rule == MdrGrowthRule::all_contacts && den > T(0)) num -= V_new - s.volume(p);
+        if (s.rule == MdrGrowthRule::yielded_contacts && den > T(0)) num -= V_new - s.volume(p);
         // (37). D < 0 in normal use; near 0 under high confinement (Appendix C): floored.
         T D = den - T(4) * pi * R * R;
         const T D_max = -s.denominator_floor * T(4) * pi * R * R;

@@ -1,6 +1,6 @@
 #pragma once
-// Particle pairs in MDR as sides of the equivalent equal pair (MdrPairSplit::equal_pair and
-// equal_pair_balanced; evaluated for issue 18 item 1, docs/mdr-pair-split-evaluation.md).
+// Particle pairs in MDR as sides of the equivalent equal pair (MdrPairSplit::equal_pair, the
+// default; chosen by measurement against the other splits, docs/mdr-pair-split-evaluation.md).
 //
 // MDR Part I builds the law for one sphere against a rigid flat (Section 5.2, Fig. 6); two equal
 // spheres of one material are two such sides at delta/2 each. For two spheres of radii R_0, R_1
@@ -28,7 +28,11 @@
 //   side (d_s = w_s delta_o + R_s - R_o,s, the flat staying put while the particle grows, as
 //   Appendix C's rigid flats and the authors' sides), and (37)'s cap of side s is cut from the
 //   sphere R'_s (Mdr::commit_side, mdr_growth_add_side's R_cap): the particle's compliance share of
-//   the lens, its base the lens rim. Equal spheres of one material: R'_s = R, exactly (37) as the
+//   the lens, its base the lens rim. The side's sphere is that of the initial radii grown by its own
+//   particle's growth, R'_s = R'_s(R_o,0, R_o,1) + R_s - R_o,s (mdr_equal_pair_grown): its R_o is
+//   fixed, as a side's must be, and the partner's growth does not enlarge it (with R'_s from the
+//   current radii, a small particle's growth swelled the large particle's side and a pair pushed
+//   harder while it was unloaded). Equal spheres of one material: R'_s = R, exactly (37) as the
 //   authors apply it.
 #include <epac/core/kokkos_compat.hpp>
 
@@ -51,6 +55,16 @@ KOKKOS_FORCEINLINE_FUNCTION MdrEqualPair<T> mdr_equal_pair(T R0, T R1, T E0, T E
   // R*/w_s without dividing by a tiny w: R* (E_0 + E_1)/E_o
   q.R[0] = R_star * (E0 + E1) / E1;
   q.R[1] = R_star * (E0 + E1) / E0;
+  return q;
+}
+
+// With radius growth: the sides of the initial radii R_o,s, each grown by its own particle's
+// growth R_s - R_o,s (header). Without growth (R_s = R_o,s) mdr_equal_pair itself.
+template <class T>
+KOKKOS_FORCEINLINE_FUNCTION MdrEqualPair<T> mdr_equal_pair_grown(T R0, T R1, T R0o, T R1o, T E0, T E1) {
+  MdrEqualPair<T> q = mdr_equal_pair(R0o, R1o, E0, E1);
+  q.R[0] += R0 - R0o;
+  q.R[1] += R1 - R1o;
   return q;
 }
 
