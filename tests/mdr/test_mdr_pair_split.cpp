@@ -132,8 +132,8 @@ TEMPLATE_LIST_TEST_CASE("MDR pair split: the issue's similarity table, default a
     const std::vector<double> F_old = forces_along(old_model, R0, R1, 0, 0, path);
     const std::vector<double> F_equal = forces_along(model, 2 * Rs, 2 * Rs, 0, 0, path);
     for (int k : {150, 300, 500}) {
-      INFO("R_1/R_0 " << ratio << ", delta/R* " << path[k] / Rs << ": default " << F[k] / F_equal[k]
-                      << ", balanced " << F_old[k] / F_equal[k]);
+      INFO("R_1/R_0 " << ratio << ", delta/R* " << path[k] / Rs << ": default " << F[k] / F_equal[k] << ", balanced "
+                      << F_old[k] / F_equal[k]);
       CHECK(F[k] / F_equal[k] == Approx(1.0).epsilon(1e-9));
       CHECK(F_old[k] / F_equal[k] < 0.9);  // 0.58-0.88 measured
     }
@@ -191,8 +191,7 @@ TEMPLATE_LIST_TEST_CASE("MDR pair split: radius growth shares a same-material pa
     const double V0 = 4.0 / 3 * M_PI * (std::pow(t.R0.back(), 3) - R0 * R0 * R0) / lens;
     const double V1 = 4.0 / 3 * M_PI * (std::pow(t.R1.back(), 3) - R1 * R1 * R1) / lens;
     const double Ve = 4.0 / 3 * M_PI * (std::pow(te.R0.back(), 3) - 8 * Rs * Rs * Rs) / lens_e;
-    INFO("R_1/R_0 " << ratio << ": volume gained / lens: small " << V0 << ", large " << V1 << ", equal pair "
-                    << Ve);
+    INFO("R_1/R_0 " << ratio << ": volume gained / lens: small " << V0 << ", large " << V1 << ", equal pair " << Ve);
     REQUIRE(t.finite);
     CHECK(V0 > 0.3);
     CHECK(V0 < 0.65);

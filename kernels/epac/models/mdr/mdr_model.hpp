@@ -455,13 +455,13 @@ struct Mdr {
   }
 
   // MdrPairSplit::equal_pair: the sides of the equivalent equal pair (detail/mdr_pair_equal.hpp),
-  // radii R'_s, the flat where F_0 = F_1 (the balance solve with equal weights). First guess: the
-  // elastic root, the approach delta_o = delta - both growths split by compliance and each
-  // particle's own growth on its own side (MDR (19) per side, the flat staying put while the
-  // particle grows, Appendix C); it balances one material exactly in every regime (both sides are
-  // then the same side of the equal pair), so that pair needs one evaluation and no warm start.
-  // Two materials, once a side yielded: the last pass's root moved along its tangent, as for the
-  // balanced split. The growth caps (commit_side) are cut from the sides' spheres R'_s.
+  // radii R'_s. The approach delta_o = delta - both growths split by compliance, each particle's
+  // own growth on its own side (MDR (19) per side, the flat staying put while the particle grows,
+  // Appendix C). One material: that split itself (both sides are the same side of the equal pair:
+  // F_0 = F_1 exactly without growth, and to the sides' own growths with it), one evaluation, no
+  // warm start. Two materials: the flat where F_0 = F_1 (the balance solve with equal weights),
+  // that split the first guess, once a side yielded the last pass's root moved along its tangent,
+  // as for the balanced split. The growth caps (commit_side) are cut from the sides' spheres R'_s.
   template <bool Write>
   KOKKOS_FORCEINLINE_FUNCTION void equal_pair_sides(const ContactGeometry<T>& g, const HistoryRow<T, Device>& row,
                                                     const MdrPairConstants<T>& pc, PairSides& ps,
@@ -476,8 +476,15 @@ struct Mdr {
     }
     // (ps.growth[s] = e.growth_of[s], set_pair_sides: each side's own growth)
     e.dside[0] = q.w[0] * (g.delta - e.growth_of[0] - e.growth_of[1]) + e.growth_of[0];
-    const T guess = pc.same_material ? e.dside[0] : balance_guess(g, row, e);
-    const T d0 = mdr_balance_split(ps, g.delta, guess, q.R[0] + q.R[1]);
+    // One material: both sides are the same side of the equal pair, at the same delta_o/2, each
+    // grown by its own particle; no solve (a solve here would move the sides' delta_o by its
+    // tolerance from step to step, flipping the exact plastic-loading test delta_o >= delta_o,max
+    // and with it the growth: round-off then grew to 1e-3 of a compaction's positions).
+    T d0 = e.dside[0];
+    if (pc.same_material)
+      ps(d0);
+    else
+      d0 = mdr_balance_split(ps, g.delta, balance_guess(g, row, e), q.R[0] + q.R[1]);
     for (int s = 0; s < 2; ++s) {
       e.dside[s] = ps.d[s];
       e.st[s] = ps.st[s];

@@ -48,7 +48,8 @@ enum class MdrPairSplit {
   // Default. Each side is a side of the equivalent equal pair (detail/mdr_pair_equal.hpp): a
   // sphere of radius R'_s = R* E_s/E* (one material: 2 R*) of its own material against the flat,
   // the flat where the two sides' forces are equal, F_0(d_0) = F_1(delta - d_0). The elastic root
-  // is d_s = delta E*/E_s (one material: delta/2, exact in every regime, so no solve). Hertz with E*
+  // is d_s = delta E*/E_s (one material: delta/2, exact in every regime, so no solve; with radius
+  // growth each side adds its own particle's growth). Hertz with E*
   // and R* at any radius and modulus ratio, the plastic similarity of same-material spheres
   // (the pair is the equal pair of radius 2 R* at every overlap), JKR of R* and E*; passive.
   equal_pair,
@@ -207,8 +208,8 @@ struct MdrPairConstants {
   // load per contact, no per-material lookups on the hot path.
   MdrSideConstants<T> side_a, side_b;
   T gamma_a, gamma_b;
-  // One material on both sides (MdrPairSplit::equal_pair: the elastic split d_s = delta/2 balances
-  // the sides exactly in every regime, so it is the first guess and no warm start is kept).
+  // One material on both sides (MdrPairSplit::equal_pair: the sides are the same side of the equal
+  // pair at delta_o/2, no balance solve and no warm start).
   bool same_material = false;
 };
 
