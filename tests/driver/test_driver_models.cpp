@@ -265,9 +265,10 @@ TEST_CASE("model keys are range-checked on parse", "[driver][models][scene]") {
         "model.xi = 2 is outside the valid set {1, 3} (MDR (15): 1 displacement "
         "control, 3 force control)");
   CHECK(message("name = \"mdr\"\nxi = 3") == "accepted");
-  CHECK(message("name = \"mdr\"\ngrowth_rule = \"sometimes\"")
-            .find("model.growth_rule = \"sometimes\" is not valid (valid: \"plastic_loading\", \"all_contacts\")") ==
-        0);
+  CHECK(
+      message("name = \"mdr\"\ngrowth_rule = \"sometimes\"")
+          .find("model.growth_rule = \"sometimes\" is not valid (valid: \"plastic_loading\", \"yielded_contacts\")") ==
+      0);
   CHECK(message("name = \"mdr\"\ngrowth_rule = 1").find("model.growth_rule must be a string") == 0);
   CHECK(message("name = \"mdr\"\nradius_cap = 0.5").find("model.radius_cap = 0.5 is outside") == 0);
   CHECK(

@@ -19,13 +19,22 @@ using namespace epac::test;
 
 namespace {
 
-// fcc cell a = sqrt(2) 1.8 mm: nearest neighbours at 1.8 mm (jitter 0.01 mm per coordinate), radii
-// 0.98-1.0 mm, so every nearest-neighbour contact overlaps, the largest by 0.21 R. E/Y = 100.
-// Measured (double, 2 threads): from overlaps, R/R_o <= 1.063 after the load and at the end, no
-// guard hit, no rebuild, overlaps <= 0.31 R; with fresh history, 7202 denominator-guard and 11
-// radius-cap hits, R/R_o = 1.5, 135 rebuilds in 400 steps, overlaps to 1.74 R (docs/stability.md,
-// "Starting from a packed state").
-std::string packed_scene(const std::string& initial_history) {
+// fcc cell a = sqrt(2) nn, nearest neighbours at nn = 1.81 mm (jitter 0.01 mm per coordinate),
+// radii 0.98-1.0 mm, so every nearest-neighbour contact overlaps, the largest by 0.20 R. E/Y = 100.
+// Measured (double, 2 threads, default pair split equal_pair): from overlaps R/R_o = 1.057, no
+// guard hit, no rebuild; with fresh history ("zero": each overlap one plastic increment) R/R_o =
+// 1.096, still without a guard hit. At nn = 1.8 mm (0.21 R) even the quasi-static load trips the
+// denominator guard twice (R/R_o 1.096); at nn = 1.75 mm (0.26 R) fresh history trips it 184 times
+// (R/R_o 1.28) and the warning names initial_history. (With the previous default split the
+// quasi-static load grew the radii less, 1.061 at 0.21 R: a side's delta_o then took half of the
+// neighbours' growth, so sides left plastic loading and skipped (37) increments.)
+std::string packed_scene(const std::string& initial_history, double nn = 1.81e-3) {
+  const double a = nn * std::sqrt(2.0), edge = 3 * a;
+  std::ostringstream geometry;
+  geometry.precision(17);
+  geometry << "[box]\nlo = [0.0, 0.0, 0.0]\nhi = [" << edge << ", " << edge << ", " << edge
+           << "]\nperiodic = [true, true, true]\n\n[particles]\nallow_overlap = true\n\n[particles.lattice]\n"
+           << "type = \"fcc\"\na = " << a << "\n";
   return std::string(R"(
 [materials.powder]
 youngs_modulus = 1.0e7
@@ -37,18 +46,8 @@ yield_stress = 1.0e5
 [model]
 name = "mdr"
 
-[box]
-lo = [0.0, 0.0, 0.0]
-hi = [0.007636753236814714, 0.007636753236814714, 0.007636753236814714]
-periodic = [true, true, true]
-
-[particles]
-allow_overlap = true
-
-[particles.lattice]
-type = "fcc"
-a = 2.545584412271571e-3
-cells = [3, 3, 3]
+)") + geometry.str() +
+         R"(cells = [3, 3, 3]
 radius_min = 0.98e-3
 radius_max = 1.0e-3
 material = "powder"
@@ -59,7 +58,7 @@ jitter = 1.0e-5
 dt = 5.0e-6
 steps = 400
 output_interval = 20
-)") + initial_history;
+)" + initial_history;
 }
 
 nlohmann::json read_json(const std::filesystem::path& p) {
@@ -106,10 +105,11 @@ TEST_CASE("driver: a packing at 0.2 R starts from a quasi-static load and stays 
   std::filesystem::remove_all(dir);
 }
 
-TEST_CASE("driver: the same packing with initial_history = \"zero\" is flagged by the growth-guard warning",
+TEST_CASE("driver: a denser packing with initial_history = \"zero\" is flagged by the growth-guard warning",
           "[driver][initial_history]") {
   const auto dir = fresh_out_dir("initial-history-zero");
-  const driver::RunSummary s = run_scene_text(packed_scene("initial_history = \"zero\"\n"), dir);
+  // overlaps to 0.26 R (nn 1.75 mm): at 0.21 R the default split's growth stays inside the guards
+  const driver::RunSummary s = run_scene_text(packed_scene("initial_history = \"zero\"\n", 1.75e-3), dir);
   CHECK(s.initial_history.mode == "zero");
   CHECK_FALSE(s.initial_history.applied);
   CHECK(s.initial_history.overlapping_contacts == 648);

@@ -15,7 +15,7 @@ DEFAULT_EXAMPLES = os.path.expanduser("~/.cache/epac/lammps/4Feb2025/src/lammps-
 AUTHORS = {"pair_split": "geometric", "delta_max": "running_max", "damping": "authors",
            "friction": "authors", "yield_onset": "hertz_40", "surface_energy_share": "each_side_full",
            "adhesive_radius": "authors", "release": "zero_overlap"}
-DEFAULTS = {"pair_split": "balanced", "delta_max": "paper_19", "damping": "restitution_exact",
+DEFAULTS = {"pair_split": "equal_pair", "delta_max": "paper_19", "damping": "restitution_exact",
             "friction": "mindlin", "yield_onset": "elastic_law", "surface_energy_share": "series",
             "adhesive_radius": "paper", "release": "critical_overlap"}
 

@@ -14,8 +14,8 @@ peak |P| of the LAMMPS curve, over the compression and over the whole run. CoR =
 either code (LAMMPS's mdr: beta = -ln(CoR)/sqrt(ln^2 CoR + pi^2) = 0; epac: restitution 1 compiles
 no damping), no friction in either: the difference is the normal law and the growth.
 
---equal-radii adds the same comparison with all radii equal (polyd 0): there epac's balanced flat
-(models/mdr/detail/mdr_pair_balance.hpp) and the authors' radical plane coincide. --ranks N also runs epac+growth on N
+--equal-radii adds the same comparison with all radii equal (polyd 0): there epac's equal-pair
+split (models/mdr/detail/mdr_pair_equal.hpp) and the authors' radical plane coincide. --ranks N also runs epac+growth on N
 MPI ranks and compares the printed values with 1 rank digit by digit.
 
   python3 tests/lammps/compare_mdr_compaction.py --plugin /tmp/plugin-build-a/drivers/lammps/epacplugin.so
@@ -81,8 +81,8 @@ def main():
     ap.add_argument("--Y", default="5e6")
     ap.add_argument("--CoR", default="1")
     ap.add_argument("--equal-radii", action="store_true")
-    ap.add_argument("--pair-split", choices=["balanced", "geometric"], default="balanced",
-                    help="epac's pair flat: balanced (default) or geometric (the authors' radical plane)")
+    ap.add_argument("--pair-split", choices=["equal_pair", "balanced", "geometric"], default="equal_pair",
+                    help="epac's pair split: equal_pair (default), balanced (the default before 0.x) or geometric (the authors' radical plane)")
     ap.add_argument("--delta-max", choices=["paper_19", "running_max"], default="paper_19",
                     help="epac's delta_max with growth: MDR (19) (default) or running_max (the authors' code)")
     ap.add_argument("--authors", action="store_true",

@@ -8,9 +8,10 @@ no damping (CoR 1), no friction, no adhesion, psi_b 0, it compares epac's force 
 same steps: max |F_epac - F_lammps| / peak |F_lammps|.
   - epac's documented conventions set to the authors' choices (pair_style epac/mdr pair_split
     geometric delta_max running_max yield_onset hertz_40): every case within 1% (asserted);
-  - epac's defaults (balanced split, delta_max by (19)): elastic cases and equal radii within 1%
-    (asserted); plastic unequal pairs printed (the balance departs from the radical plane at
-    first order once the sides yield: docs/models.md "MDR conventions").
+  - epac's defaults (equal_pair split, delta_max by (19)): equal radii within 1% (asserted), elastic
+    unequal pairs within 0.1% up to delta = 0.1 R* (asserted: both are Hertz with E*, R* there),
+    the rest printed (the equal-pair sides follow the similarity of same-material spheres, the
+    authors' radical plane does not: docs/models.md "MDR conventions").
   python3 tests/lammps/compare_mdr_pair.py --lmp LMP --plugin epacplugin.so [--workdir DIR]
 """
 import argparse
@@ -21,6 +22,7 @@ import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 INPUT = os.path.join(HERE, "in.mdr_pair")
+N = 2000  # steps per segment of in.mdr_pair (its variable N): the first loading is steps 0..N
 
 
 def run(args, workdir, label, variables):
@@ -52,36 +54,48 @@ def main():
     os.makedirs(workdir, exist_ok=True)
     plugin = os.path.abspath(args.plugin)
     failed = False
-    print("| E/Y | R2/R1 | peak F [N] | authors' choices | epac's defaults | F_default / F_lammps at 0.4 R1 |")
-    print("|---|---|---|---|---|---|")
+    print("| E/Y | R2/R1 | peak F [N] | authors' choices | epac's defaults | epac's defaults, delta <= 0.1 R* | F_default / F_lammps at 0.4 R1 |")
+    print("|---|---|---|---|---|---|---|")
     for Y in ("5e6", "1e12"):
         for R2 in ("1.0e-3", "2.0e-3", "5.0e-3"):
             tag = f"{Y}_{R2}"
+            R_star = 1e-3 * float(R2) / (1e-3 + float(R2))
             base = [("R2", R2)]
             ref = run(args, workdir, "lammps_" + tag,
                       base + [("pcoeffs", f"mdr 1e9 0.3 {Y} 0 0 1 tangential linear_nohistory 0 0 damping none")])
             peak = max(abs(v[1]) for v in ref.values())
             res = {}
             for split, style in (("geometric", "epac/mdr pair_split geometric delta_max running_max yield_onset hertz_40"),
-                                 ("balanced", "epac/mdr")):
+                                 ("default", "epac/mdr")):
                 e = run(args, workdir, f"epac_{split}_{tag}",
                         base + [("plugin", plugin), ("pstyle", style),
                                 ("pcoeffs", f"1e9 0.3 {Y} 0 0 1"), ("grow", "1")])
                 steps = sorted(set(ref) & set(e))
-                res[split] = (max(abs(e[s][1] - ref[s][1]) for s in steps) / peak, e)
-            ratio = res["balanced"][1][6000][1] / ref[6000][1]
+                # the first loading up to delta = 0.1 R* (small contact: Hertz with E*, R* in both)
+                small = [st for st in steps if st <= N and ref[st][0] <= 0.1 * R_star]
+                res[split] = (max(abs(e[st][1] - ref[st][1]) for st in steps) / peak, e,
+                              max(abs(e[st][1] - ref[st][1]) for st in small) / peak)
+            ratio = res["default"][1][6000][1] / ref[6000][1]
             ey = 1e9 / float(Y)
             rr = float(R2) / 1e-3
-            print(f"| {'elastic' if Y == '1e12' else f'{ey:.3g}'} | {rr:.0f} | {peak:.4g} | {res['geometric'][0]:.3%} | {res['balanced'][0]:.3%} | {ratio:.3f} |")
-            checks = [("geometric", res["geometric"][0])]
-            if Y == "1e12" or rr == 1:
-                checks.append(("balanced", res["balanced"][0]))
-            for name, value in checks:
-                if not value <= 0.01:
-                    print(f"  FAIL {name}, E/Y {ey:.3g}, R2/R1 {rr:.0f}: {value:.3%} > 1% of the peak")
+            print(f"| {'elastic' if Y == '1e12' else f'{ey:.3g}'} | {rr:.0f} | {peak:.4g} | {res['geometric'][0]:.3%} | {res['default'][0]:.3%} | {res['default'][2]:.3%} | {ratio:.3f} |")
+            # authors' choices: the authors' construction, every case within 1% of the peak.
+            # defaults: equal radii are the same construction (1%, whole path); unequal elastic
+            # pairs are Hertz with E*, R* in both codes while the contact is small, so within 0.1%
+            # of the peak up to delta = 0.1 R* (measured 0.024% at ratio 5); beyond that MDR's
+            # large-deformation terms act on different sides (the authors' own spheres on the
+            # radical plane, epac's equal-pair sides), neither a reference: printed.
+            checks = [("geometric", res["geometric"][0], 0.01)]
+            if rr == 1:
+                checks.append(("default", res["default"][0], 0.01))
+            elif Y == "1e12":
+                checks.append(("default up to delta = 0.1 R*", res["default"][2], 0.001))
+            for name, value, tol in checks:
+                if not value <= tol:
+                    print(f"  FAIL {name}, E/Y {ey:.3g}, R2/R1 {rr:.0f}: {value:.3%} > {tol:.1%} of the peak")
                     failed = True
     print("files in", workdir)
-    print("FAILED" if failed else "all asserted cases within 1% of the peak force")
+    print("FAILED" if failed else "all asserted cases within their bounds")
     return 1 if failed else 0
 
 

@@ -77,11 +77,12 @@ class ContactStepper {
     auto r = to_host(p_.radius);  // the current (grown) radii: delta is the apparent overlap
     if (pair_) {
       auto x = Kokkos::create_mirror_view(p_.x);
-      x(1, 0) = T(double(r(0)) + double(r(1)) - delta);
+      // positions are double whatever T (Particles::position_type): the overlap is not rounded to T
+      x(1, 0) = double(r(0)) + double(r(1)) - delta;
       Kokkos::deep_copy(p_.x, x);
     } else {
       auto wp = Kokkos::create_mirror_view(w_.point);
-      wp(0, 0) = T(double(r(0)) - delta);
+      wp(0, 0) = double(r(0)) - delta;
       Kokkos::deep_copy(w_.point, wp);
     }
     zero_forces(p_);

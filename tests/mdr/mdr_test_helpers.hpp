@@ -288,7 +288,7 @@ PairTrace run_pair_path(Model model, double R0, double R1, int m1, const std::ve
   PairTrace tr;
   for (double d : overlaps) {
     x(0, 0) = T(0);
-    x(1, 0) = T(R0 + R1 - d);
+    x(1, 0) = R0 + R1 - d;  // double whatever T (Particles::position_type)
     Kokkos::deep_copy(p.x, x);
     zero_forces(p);
     compute_pair_forces(model, p, c, h, T(0), out);

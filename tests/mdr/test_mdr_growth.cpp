@@ -25,7 +25,7 @@ TEMPLATE_LIST_TEST_CASE("MDR growth: R non-decreasing, V positive, growth only a
   using T = typename TestType::scalar;
   using M = Mdr<T, Effects<kPlasticity | kRadiusGrowth>, D>;
   const double E = 1.0, R0 = 1.0;
-  for (auto rule : {MdrGrowthRule::plastic_loading, MdrGrowthRule::all_contacts}) {
+  for (auto rule : {MdrGrowthRule::plastic_loading, MdrGrowthRule::yielded_contacts}) {
     for (double EY : {12.5, 50.0}) {
       MdrOptions opt;
       opt.growth_rule = rule;

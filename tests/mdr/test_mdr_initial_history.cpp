@@ -234,13 +234,18 @@ TEMPLATE_LIST_TEST_CASE("history_from_overlaps, MDR pair of unequal spheres: equ
   CHECK(rep.overlaps.max_overlap_ratio == Approx(0.2).epsilon(1e-9));  // over the smaller radius
   const auto Rr = host_vector(ref.p.radius), Ri = host_vector(init.p.radius);
   const double radii0[2] = {R0, R1};
-  // the smaller sphere takes the larger cap (radical plane): it yields and grows; the larger one
-  // stays elastic here (E/Y = 20, cap height 0.044 R_o) and keeps R_o on both paths
-  REQUIRE(Rr[1] - R1 > 0.001 * R1);
+  // one material, default split (equal_pair): both sides are the side of the equal pair (radius
+  // 2 R*) at delta_o/2, so both yield together and both particles grow, on both paths (under the
+  // previous default, the radical plane, only the smaller sphere yielded)
+  REQUIRE(Rr[0] - R0 > 1e-5 * R0);  // 8.3e-5 R_o measured: its share spread over a larger sphere
+  REQUIRE(Rr[1] - R1 > 2e-4 * R1);  // 7.5e-4 R_o measured
   for (int i = 0; i < 2; ++i) {
     INFO("particle " << i);
     const double growth = Rr[i] - radii0[i];
-    CHECK(std::fabs(Ri[i] - Rr[i]) <= 0.02 * growth);
+    // the load's 100 increments against the reference's 4000 steps: measured 3.7% (larger) and 3.2%
+    // (smaller sphere) of the growth with the default split, where both spheres yield and share the
+    // displaced volume (under the previous default only the smaller one grew, within 2%)
+    CHECK(std::fabs(Ri[i] - Rr[i]) <= 0.05 * growth);
   }
   const auto hr = host_rows(ref.ph)[0], hi = host_rows(init.ph)[0];
   CHECK(hi[0] == Approx(target).epsilon(1e-12));  // largest total delta_o of the pair (19)
@@ -251,7 +256,7 @@ TEMPLATE_LIST_TEST_CASE("history_from_overlaps, MDR pair of unequal spheres: equ
     const double growth = std::fabs(Rr[s == 0 ? 1 : 0] - radii0[s == 0 ? 1 : 0]);  // side 0: smaller gid
     CHECK(hi[b + 0] == Approx(hr[b + 0]).epsilon(0.02));  // the side's delta_o,max: split by the grown radii
     CHECK(hi[b + 1] == hr[b + 1]);
-    CHECK(hi[b + 1] == (s == 0 ? 1.0 : 0.0));  // side 0: the smaller sphere (smaller gid) yields
+    CHECK(hi[b + 1] == 1.0);  // both sides yielded
     CHECK(hi[b + 2] == Approx(hr[b + 2]).epsilon(1e-9));
     CHECK(std::fabs(hi[b + 3] - hr[b + 3]) < 0.05 * growth + 1e-12);
   }

@@ -1,7 +1,7 @@
 // MDR pairs stay finite and conservative where the old pair split did not (MDR finite for every accepted input, docs/stability.md):
 // the split's interpolation stays in [0, 1] and never throws a side beyond its residual or above
 // its height at dmax; the two reproductions of the issue; closed elastic cycles of unequal pairs
-// return at most the work put in; the all_contacts growth rule does not ratchet elastic contacts.
+// return at most the work put in; the yielded_contacts growth rule does not ratchet elastic contacts.
 #include "contact_stepper.hpp"
 #include "mdr_test_helpers.hpp"
 
@@ -109,8 +109,13 @@ TEMPLATE_LIST_TEST_CASE(
   for (size_t k = 0; k < t.F.size(); ++k) {
     CHECK(t.R0[k] <= 1.5 * Rs * (1 + 1e-6));
     CHECK(t.R1[k] <= 1.5 * Rl * (1 + 1e-6));
-    // unloading never pushes harder than the first (deepest) step
-    CHECK(t.F[k] <= t.F[0] * (1 + 1e-5) + 1e-30);
+    // once unloading, nothing grows (growth feeds on plastic loading only): the force only falls
+    if (k >= 2) CHECK(t.F[k] <= t.F[k - 1] * (1 + 1e-9) + 1e-30);
+    // the first unloading step carries the jump's growth: the small particle's side sphere and its
+    // apparent overlap both grew by R - R_o (MDR (19)), so it pushes harder than the jump itself,
+    // by 14.6% (default split; 1.7% when a balance solve moved the flat off the grown side, 31%
+    // when the sides' spheres followed R* of the grown radii): bound 1.25, a guard on the measured value
+    CHECK(t.F[k] <= 1.25 * t.F[0]);
   }
 }
 
@@ -168,7 +173,7 @@ TEMPLATE_LIST_TEST_CASE("MDR elastic pair, unequal radii and moduli: a closed cy
     }
 }
 
-TEMPLATE_LIST_TEST_CASE("MDR growth_rule all_contacts: an elastic sphere between flats does not ratchet",
+TEMPLATE_LIST_TEST_CASE("MDR growth_rule yielded_contacts: an elastic sphere between flats does not ratchet",
                         "[mdr][growth][energy]", BackendsAndScalars) {
   // Old rule: every touching side grew R once delta/R exceeded ~0.02 and R never shrank, so a
   // closed cycle of a non-yielding, non-adhesive sphere returned 0.63% more work than it took.
@@ -176,7 +181,7 @@ TEMPLATE_LIST_TEST_CASE("MDR growth_rule all_contacts: an elastic sphere between
   using T = typename TestType::scalar;
   using M = Mdr<T, Effects<kPlasticity | kRadiusGrowth>, D>;
   MdrOptions opt;
-  opt.growth_rule = MdrGrowthRule::all_contacts;
+  opt.growth_rule = MdrGrowthRule::yielded_contacts;
   const M model = M::create({mdr_material(1.0, 0.3, kInf), rigid_wall_material()}, opt);
   std::vector<double> path{0.0};
   append_ramp(path, 0.0, 0.15, 600);
@@ -195,6 +200,8 @@ TEMPLATE_LIST_TEST_CASE("MDR growth_rule all_contacts: an elastic sphere between
 // the mean force is a positive constant combination of the sides' forces along the sides' own
 // paths and a closed cycle of a yielded unequal pair cannot return more than it took (the
 // geometric split with the mean force did on ~1% of random cycles, up to 19% of their work).
+// The default split (equal_pair, detail/mdr_pair_equal.hpp) balances the sides' forces themselves,
+// F_0 = F_1 (lambda_s = 1/2): the same identities, the same argument.
 TEMPLATE_LIST_TEST_CASE("MDR pair: the flat balances the sides' scaled forces; yielded unequal pairs dissipate",
                         "[mdr][pair][energy]", BackendsAndScalars) {
   using D = typename TestType::device;
@@ -216,54 +223,59 @@ TEMPLATE_LIST_TEST_CASE("MDR pair: the flat balances the sides' scaled forces; y
       {2e-3, 1e-4, 5e9, 1e7, kInf, 1e5},  // small soft plastic on large stiff elastic
       {1e-3, 1e-3, 1e8, 1e8, 1e6, 1e6},   // equal spheres: delta/2 each, no solve
   };
-  for (const Case& c : cases) {
-    CAPTURE(c.R0, c.R1, c.E0, c.E1, c.Y0, c.Y1);
-    const Material a = mdr_material(c.E0, 0.3, c.Y0), b = mdr_material(c.E1, 0.25, c.Y1);
-    const M model = M::create({a, b});
-    const double Ea = c.E0 / (1 - 0.09), Eb = c.E1 / (1 - 0.0625);
-    const double lam0 = c.R0 * Eb / ((c.R0 + c.R1) * (Ea + Eb)), lam1 = c.R1 * Ea / ((c.R0 + c.R1) * (Ea + Eb));
-    const double Rmin = std::min(c.R0, c.R1);
-    // one grid of 5e-4 Rmin: load 0.3, unload 0.1, reload 0.4, unload to a gap (each segment
-    // crossed as often up as down)
-    const double h = 5e-4 * Rmin;
-    std::vector<double> path;
-    auto walk = [&](double from, double to) {
-      const int n = static_cast<int>(std::lround(std::fabs(to - from) / h));
-      for (int k = 1; k <= n; ++k) path.push_back(from + (to - from) * k / n);
-    };
-    path.push_back(-0.02 * Rmin);
-    walk(-0.02 * Rmin, 0.3 * Rmin);
-    walk(0.3 * Rmin, 0.1 * Rmin);
-    walk(0.1 * Rmin, 0.4 * Rmin);
-    walk(0.4 * Rmin, -0.02 * Rmin);
-    ContactStepper<M> s(model, c.R0, c.R1, 0, 1);
-    std::vector<double> F;
-    double worst_balance = 0, Fpeak = 0;
-    int yielded = 0;
-    for (double d : path) {
-      F.push_back(s.step(d));
-      auto side = [&](int k, int what) {
-        return s.evaluate(MdrOutputField{MdrOutputField::Field(what), k});  // 0 force, 1 overlap, 2 yielded
+  for (const MdrPairSplit split : {MdrPairSplit::balanced, MdrPairSplit::equal_pair})
+    for (const Case& c : cases) {
+      const bool equal_pair = split == MdrPairSplit::equal_pair;
+      CAPTURE(equal_pair, c.R0, c.R1, c.E0, c.E1, c.Y0, c.Y1);
+      const Material a = mdr_material(c.E0, 0.3, c.Y0), b = mdr_material(c.E1, 0.25, c.Y1);
+      MdrOptions opt;
+      opt.pair_split = split;
+      const M model = M::create({a, b}, opt);
+      const double Ea = c.E0 / (1 - 0.09), Eb = c.E1 / (1 - 0.0625);
+      const double lam0 = equal_pair ? 0.5 : c.R0 * Eb / ((c.R0 + c.R1) * (Ea + Eb)),
+                   lam1 = equal_pair ? 0.5 : c.R1 * Ea / ((c.R0 + c.R1) * (Ea + Eb));
+      const double Rmin = std::min(c.R0, c.R1);
+      // one grid of 5e-4 Rmin: load 0.3, unload 0.1, reload 0.4, unload to a gap (each segment
+      // crossed as often up as down)
+      const double h = 5e-4 * Rmin;
+      std::vector<double> path;
+      auto walk = [&](double from, double to) {
+        const int n = static_cast<int>(std::lround(std::fabs(to - from) / h));
+        for (int k = 1; k <= n; ++k) path.push_back(from + (to - from) * k / n);
       };
-      const double F0 = side(0, 0), F1 = side(1, 0);
-      const double sc = lam0 * std::fabs(F0) + lam1 * std::fabs(F1);
-      if (sc > 0) worst_balance = std::max(worst_balance, std::fabs(lam0 * F0 - lam1 * F1) / sc);
-      if (F.back() != 0.0) {
-        CHECK(side(0, 1) + side(1, 1) == Approx(s.overlap()).epsilon(same).margin(1e-6 * h));
-        Fpeak = std::max(Fpeak, std::fabs(F.back()));
-        CHECK(F.back() ==
-              Approx(0.5 * (F0 + F1)).epsilon(same).margin(same * 1e-2 * Fpeak));  // margin: near separation
+      path.push_back(-0.02 * Rmin);
+      walk(-0.02 * Rmin, 0.3 * Rmin);
+      walk(0.3 * Rmin, 0.1 * Rmin);
+      walk(0.1 * Rmin, 0.4 * Rmin);
+      walk(0.4 * Rmin, -0.02 * Rmin);
+      ContactStepper<M> s(model, c.R0, c.R1, 0, 1);
+      std::vector<double> F;
+      double worst_balance = 0, Fpeak = 0;
+      int yielded = 0;
+      for (double d : path) {
+        F.push_back(s.step(d));
+        auto side = [&](int k, int what) {
+          return s.evaluate(MdrOutputField{MdrOutputField::Field(what), k});  // 0 force, 1 overlap, 2 yielded
+        };
+        const double F0 = side(0, 0), F1 = side(1, 0);
+        const double sc = lam0 * std::fabs(F0) + lam1 * std::fabs(F1);
+        if (sc > 0) worst_balance = std::max(worst_balance, std::fabs(lam0 * F0 - lam1 * F1) / sc);
+        if (F.back() != 0.0) {
+          CHECK(side(0, 1) + side(1, 1) == Approx(s.overlap()).epsilon(same).margin(1e-6 * h));
+          Fpeak = std::max(Fpeak, std::fabs(F.back()));
+          CHECK(F.back() ==
+                Approx(0.5 * (F0 + F1)).epsilon(same).margin(same * 1e-2 * Fpeak));  // margin: near separation
+        }
+        yielded = std::max(yielded, static_cast<int>(side(0, 2)));
       }
-      yielded = std::max(yielded, static_cast<int>(side(0, 2)));
+      CHECK(worst_balance < tol);
+      CHECK(yielded >= 1);
+      const CycleWork w = cycle_work(path, F);
+      INFO("in " << w.in << ", out " << w.out << ", relative " << (w.out - w.in) / w.in);
+      REQUIRE(w.in > 0);
+      CHECK(w.out < w.in);  // a yielded pair dissipates
+      CHECK(F.back() == 0.0);
     }
-    CHECK(worst_balance < tol);
-    CHECK(yielded >= 1);
-    const CycleWork w = cycle_work(path, F);
-    INFO("in " << w.in << ", out " << w.out << ", relative " << (w.out - w.in) / w.in);
-    REQUIRE(w.in > 0);
-    CHECK(w.out < w.in);  // a yielded pair dissipates
-    CHECK(F.back() == 0.0);
-  }
 }
 
 TEMPLATE_LIST_TEST_CASE("MDR pair_split geometric: the authors' radical plane while loading, the mean of the sides",
@@ -296,7 +308,7 @@ TEMPLATE_LIST_TEST_CASE("MDR pair_split geometric: the authors' radical plane wh
       worst_split_gap = std::max(worst_split_gap, std::fabs(dg0 - db0) / d);
       if (R1 == R0) CHECK(Fg == Approx(Fb).epsilon(tol * 10));  // equal spheres: both splits are delta/2
     }
-    // unequal yielded spheres: the balance moves the flat off the radical plane (the balanced pair split)
+    // unequal yielded spheres: the default split (equal_pair) moves the flat off the radical plane
     if (R1 != R0)
       CHECK(worst_split_gap > 1e-3);
     else

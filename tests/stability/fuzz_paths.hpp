@@ -141,7 +141,7 @@ FuzzCounts fuzz_paths(long n_paths, std::uint64_t seed, int group = 512, int ref
     const double Rg = r.log_u(1e-7, 1e-1);
     std::vector<Material> mats;
     for (int k = 0; k < 2 * K; ++k) {
-      for (int attempt = 0;; ++attempt) {
+      for (;;) {  // until create accepts the material
         const Material m = fuzz_material(r, Rg, k >= K, !is_nan);
         try {
           (void)Make::make({m, stability_wall()});

@@ -47,6 +47,7 @@
 #include <epac/models/mdr/detail/mdr_detachment.hpp>
 #include <epac/models/mdr/detail/mdr_evaluation.hpp>
 #include <epac/models/mdr/detail/mdr_pair_balance.hpp>
+#include <epac/models/mdr/detail/mdr_pair_equal.hpp>
 #include <epac/models/mdr/detail/mdr_pair_split.hpp>
 #include <epac/models/mdr/detail/mdr_side_force.hpp>
 #include <epac/models/mdr/mdr_history_layout.hpp>
@@ -98,7 +99,8 @@ struct Mdr {
   Kokkos::View<MdrPairConstants<T>*, Device> pairs;  // per material pair, mat_i * nmat + mat_j
   int nmat = 0;
   T xi = T(1);
-  bool geometric_split = false;  // MdrOptions::pair_split == geometric (the authors' flat)
+  bool geometric_split = false;   // MdrOptions::pair_split == geometric (the authors' flat)
+  bool equal_pair_split = false;  // MdrOptions::pair_split == equal_pair (detail/mdr_pair_equal.hpp)
   // MdrOptions::delta_max: 1 for MDR (19), delta_max shifted by R - R_o; 0 for the authors' running
   // maximum of delta (the sides then see no shift)
   T growth_in_max = T(1);
@@ -208,13 +210,24 @@ struct Mdr {
     const MdrPairConstants<T>& pc = pairs(g.pair);
     const bool grows = Eff::radius_growth && growth.bound();
     T critical = T(0);
+    T grown[2] = {T(0), T(0)}, R[2] = {e.Rs[0], e.Rs[1]};
+    for (int s = 0; s < e.nsides; ++s) grown[s] = grows ? growth_in_max * (e.Rs[s] - growth.radius0(e.part[s])) : T(0);
+    if (e.is_pair && equal_pair_split) {
+      // the equivalent equal pair's sides (detail/mdr_pair_equal.hpp)
+      const bool b0 = e.swap;  // side 0 is material b when swapped
+      T R0o[2] = {e.Rs[0], e.Rs[1]};
+      if (grows)
+        for (int s = 0; s < 2; ++s) R0o[s] = growth.radius0(e.part[s]);
+      const MdrEqualPair<T> q = mdr_equal_pair_grown(
+          e.Rs[0], e.Rs[1], R0o[0], R0o[1], (b0 ? pc.side_b : pc.side_a).E_eff, (b0 ? pc.side_a : pc.side_b).E_eff);
+      for (int s = 0; s < 2; ++s) R[s] = q.R[s];  // each side's own growth, as in equal_pair_sides
+    }
     for (int s = 0; s < e.nsides; ++s) {
       const bool side_b = (s == 0) == e.swap;        // as in evaluate
       const MdrSideState<T> st = load_side(row, s);  // reads delta_o,max, yielded, c_A
-      const T grown = grows ? growth_in_max * (e.Rs[s] - growth.radius0(e.part[s])) : T(0);
       const T gamma_s = Eff::adhesion ? (side_b ? pc.gamma_b : pc.gamma_a) : T(0);
       critical +=
-          mdr_side_critical_overlap<Eff::plasticity>(side_b ? pc.side_b : pc.side_a, gamma_s, e.Rs[s], grown, st);
+          mdr_side_critical_overlap<Eff::plasticity>(side_b ? pc.side_b : pc.side_a, gamma_s, R[s], grown[s], st);
     }
     return critical;
   }
@@ -262,6 +275,7 @@ struct Mdr {
     m.nmat = static_cast<int>(materials.size());
     m.xi = T(opt.xi);
     m.geometric_split = opt.pair_split == MdrPairSplit::geometric;
+    m.equal_pair_split = opt.pair_split == MdrPairSplit::equal_pair;
     m.sides = Kokkos::View<MdrSideConstants<T>*, Device>("mdr.sides", m.nmat);
     m.pairs = Kokkos::View<MdrPairConstants<T>*, Device>("mdr.pairs", m.nmat * m.nmat);
     auto hs = Kokkos::create_mirror_view(m.sides);
@@ -276,6 +290,7 @@ struct Mdr {
                                  ? MdrPairConstants<T>{}
                                  : mdr_pair_constants<T>(materials[a], materials[b], opt.yield_onset,
                                                          opt.surface_energy_share, opt.damping);
+    for (int a = 0; a < m.nmat; ++a) hp(a * m.nmat + a).same_material = true;
     m.growth_in_max = opt.delta_max == MdrDeltaMax::running_max ? T(0) : T(1);
     m.authors_friction = opt.friction == MdrFriction::authors;
     m.k_t_authors = T(opt.friction == MdrFriction::authors ? opt.tangential_stiffness : 0.0);
@@ -420,6 +435,10 @@ struct Mdr {
                                                       detail::MdrEvaluation<T>& e) const {
     PairSides ps;
     set_pair_sides(ps, g, pc, e);
+    if (equal_pair_split) {
+      equal_pair_sides<Write>(g, row, pc, ps, e);
+      return;
+    }
     T d0 = e.dside[0];
     if (geometric_split) {
       ps(d0);
@@ -433,6 +452,45 @@ struct Mdr {
       e.res[s] = ps.r[s];
     }
     if (Write && Eff::plasticity && !geometric_split) store_balance_warm_start(g, row, ps, e, d0);
+  }
+
+  // MdrPairSplit::equal_pair: the sides of the equivalent equal pair (detail/mdr_pair_equal.hpp),
+  // radii R'_s. The approach delta_o = delta - both growths split by compliance, each particle's
+  // own growth on its own side (MDR (19) per side, the flat staying put while the particle grows,
+  // Appendix C). One material: that split itself (both sides are the same side of the equal pair:
+  // F_0 = F_1 exactly without growth, and to the sides' own growths with it), one evaluation, no
+  // warm start. Two materials: the flat where F_0 = F_1 (the balance solve with equal weights),
+  // that split the first guess, once a side yielded the last pass's root moved along its tangent,
+  // as for the balanced split. The growth caps (commit_side) are cut from the sides' spheres R'_s.
+  template <bool Write>
+  KOKKOS_FORCEINLINE_FUNCTION void equal_pair_sides(const ContactGeometry<T>& g, const HistoryRow<T, Device>& row,
+                                                    const MdrPairConstants<T>& pc, PairSides& ps,
+                                                    detail::MdrEvaluation<T>& e) const {
+    // (e.R0s: R_o with radius growth, else the radii: load_growth)
+    const MdrEqualPair<T> q =
+        mdr_equal_pair_grown(e.Rs[0], e.Rs[1], e.R0s[0], e.R0s[1], ps.c[0]->E_eff, ps.c[1]->E_eff);
+    for (int s = 0; s < 2; ++s) {
+      ps.R[s] = q.R[s];
+      e.R_cap[s] = q.R[s];
+      ps.lambda[s] = T(0.5);  // equal forces: the mean force is each side's
+    }
+    // (ps.growth[s] = e.growth_of[s], set_pair_sides: each side's own growth)
+    e.dside[0] = q.w[0] * (g.delta - e.growth_of[0] - e.growth_of[1]) + e.growth_of[0];
+    // One material: both sides are the same side of the equal pair, at the same delta_o/2, each
+    // grown by its own particle; no solve (a solve here would move the sides' delta_o by its
+    // tolerance from step to step, flipping the exact plastic-loading test delta_o >= delta_o,max
+    // and with it the growth: round-off then grew to 1e-3 of a compaction's positions).
+    T d0 = e.dside[0];
+    if (pc.same_material)
+      ps(d0);
+    else
+      d0 = mdr_balance_split(ps, g.delta, balance_guess(g, row, e), q.R[0] + q.R[1]);
+    for (int s = 0; s < 2; ++s) {
+      e.dside[s] = ps.d[s];
+      e.st[s] = ps.st[s];
+      e.res[s] = ps.r[s];
+    }
+    if (Write && Eff::plasticity && !pc.same_material) store_balance_warm_start(g, row, ps, e, d0);
   }
 
   // The balance solve's two sides: constants, surface energy shares, radii, growths, states.
@@ -532,10 +590,11 @@ struct Mdr {
       const bool plastic_loading = r.plastic && r.loading && r.F > T(0);
       if (growth_terms.enabled)
         mdr_growth_add_side(growth, growth_terms.access(e.is_pair, g.contact, s), e.part[s], e.R0s[s], c.inv_3kappa,
-                            r.F, e.dside[s], e.Rs[s], plastic_loading, r.plastic, st.delta_o_prev, st.eps_prev);
+                            r.F, e.dside[s], e.Rs[s], plastic_loading, r.plastic, st.delta_o_prev, st.eps_prev,
+                            e.R_cap[s]);
       else
         mdr_growth_add_side(growth, growth.sums.scatter.access(), e.part[s], e.R0s[s], c.inv_3kappa, r.F, e.dside[s],
-                            e.Rs[s], plastic_loading, r.plastic, st.delta_o_prev, st.eps_prev);
+                            e.Rs[s], plastic_loading, r.plastic, st.delta_o_prev, st.eps_prev, e.R_cap[s]);
     }
     store_changed(row, s, e.before[s], st, r.plastic);
   }

@@ -22,8 +22,10 @@ namespace epac {
 enum class MdrGrowthRule {
   plastic_loading,  // authors' implementation (default): sides in plastic loading with a
                     // positive MDR force; each side's Delta V^e from its own Christoffersen term
-  all_contacts      // paper, Appendix E: every touching side (epac: every touching yielded side,
-                    // mdr_radius_growth.hpp); Delta V^e from the particle's volume
+  // Appendix E's sum over the touching sides, restricted to the yielded ones (an elastic side
+  // never grows R: mdr_radius_growth.hpp; the literal rule ratchets elastic contacts, issue 10);
+  // Delta V^e from the particle's volume. Called all_contacts until 0.x.
+  yielded_contacts
 };
 
 // Where the elastic regime ends (Section 5.6.5).
@@ -39,14 +41,26 @@ enum class MdrYieldOnset {
   hertz_40
 };
 
-// Where a pair's rigid flat sits (mdr_pair_balance.hpp, mdr_pair_split.hpp).
+// Where a pair's rigid flat sits and what each side sees (detail/mdr_pair_equal.hpp,
+// mdr_pair_balance.hpp, mdr_pair_split.hpp). MDR Part I builds the law for one sphere against a
+// rigid flat; how two unequal spheres share it is left open (docs/models.md, "MDR conventions").
 enum class MdrPairSplit {
-  // Default. The flat where the sides' scaled forces balance, lambda_0 F_0 = lambda_1 F_1: the
-  // pair is passive.
+  // Default. Each side is a side of the equivalent equal pair (detail/mdr_pair_equal.hpp): a
+  // sphere of radius R'_s = R* E_s/E* (one material: 2 R*) of its own material against the flat,
+  // the flat where the two sides' forces are equal, F_0(d_0) = F_1(delta - d_0). The elastic root
+  // is d_s = delta E*/E_s (one material: delta/2, exact in every regime, so no solve; with radius
+  // growth each side adds its own particle's growth). Hertz with E*
+  // and R* at any radius and modulus ratio, the plastic similarity of same-material spheres
+  // (the pair is the equal pair of radius 2 R* at every overlap), JKR of R* and E*; passive.
+  equal_pair,
+  // Until 0.x: the default. Each particle's own sphere against the flat where the sides' scaled
+  // forces balance, lambda_0 F_0 = lambda_1 F_1 (R_0 F_0 = R_1 F_1 once plastic): passive, Hertz
+  // with E* and R* for one material, but unequal plastic pairs are up to 51% softer than the equal
+  // pair with the same R*, and unequal moduli miss Hertz (docs/models.md's table).
   balanced,
   // The authors' choice: the radical plane while loading (epac's repaired interpolation towards the
   // residuals below the largest overlap), with the mean of the two side forces. Not work-conjugate:
-  // yielded pairs of unequal spheres returned more work than they took on ~1% of random cycles.
+  // yielded pairs of unequal spheres returned more work than they took on ~0.5% of random cycles.
   // For comparisons with the authors' implementation (LAMMPS `granular mdr`).
   geometric
 };
@@ -121,7 +135,7 @@ struct MdrOptions {
   int xi = 1;
   MdrGrowthRule growth_rule = MdrGrowthRule::plastic_loading;
   MdrYieldOnset yield_onset = MdrYieldOnset::elastic_law;
-  MdrPairSplit pair_split = MdrPairSplit::balanced;
+  MdrPairSplit pair_split = MdrPairSplit::equal_pair;
   MdrDeltaMax delta_max = MdrDeltaMax::paper_19;
   MdrDamping damping = MdrDamping::restitution_exact;
   MdrFriction friction = MdrFriction::mindlin;
@@ -194,6 +208,9 @@ struct MdrPairConstants {
   // load per contact, no per-material lookups on the hot path.
   MdrSideConstants<T> side_a, side_b;
   T gamma_a, gamma_b;
+  // One material on both sides (MdrPairSplit::equal_pair: the sides are the same side of the equal
+  // pair at delta_o/2, no balance solve and no warm start).
+  bool same_material = false;
 };
 
 // --- yield onset, host --------------------------------------------------------------------------

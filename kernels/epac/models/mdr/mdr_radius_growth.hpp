@@ -23,7 +23,7 @@
 //                    - pi d(delta_o) (2 delta_o R_o - delta_o^2 + R^2 - R_o^2)
 //     denominator += 2 pi R (delta_o + R - R_o)
 //   plastic_loading rule (default, authors' code): sides in plastic loading (yielded, delta at
-//   delta_max, F > 0); all_contacts rule (paper): every yielded side with delta > 0, and Delta V^e =
+//   delta_max, F > 0); yielded_contacts rule (Appendix E's sum, yielded sides only): every yielded side with delta > 0, and Delta V^e =
 //   -(V_new - V_old) of the whole particle, added in the update kernel. epac leaves out the sides
 //   that have not yielded: (37) conserves the volume of plastic (incompressible) deformation, and
 //   an elastic contact's cap is taken up elastically (Hertz). Counting them, the cap-volume term
@@ -90,11 +90,14 @@ struct MdrGrowthState {
 // (gs.sums.scatter.access()); R0: the particle's R_o; inv_3kappa: 1/(3 kappa) of its material;
 // F: the side's MDR force (no damping); delta: its apparent overlap; R: the particle's current
 // radius; plastic_loading: yielded, delta at its running maximum and F > 0; yielded: the side is
-// fully plastic (all_contacts rule). Updates the side's history (delta_o_prev, eps_prev).
+// fully plastic (yielded_contacts rule). Updates the side's history (delta_o_prev, eps_prev).
+// R_cap: the radius of the sphere whose cap the side cuts (default R; MdrPairSplit::equal_pair:
+// the side's equivalent radius R'_s, so that the cap is the particle's compliance share of the
+// pair's lens and its base the lens rim, detail/mdr_pair_equal.hpp), the same growth R - R_o.
 template <class T, class Device, class Access>
 KOKKOS_FORCEINLINE_FUNCTION void mdr_growth_add_side(const MdrGrowthState<T, Device>& gs, const Access& acc, int p,
                                                      T R0, T inv_3kappa, T F, T delta, T R, bool plastic_loading,
-                                                     bool yielded, T& delta_o_prev, T& eps_prev) {
+                                                     bool yielded, T& delta_o_prev, T& eps_prev, T R_cap = T(0)) {
   const T pi = constants<T>::pi;
   const T V = gs.volume(p);                // >= volume_floor V_o > 0 (update kernel guard)
   const T b = math::max(R - delta, T(0));  // branch length; >= 0 past the centre (guard)
@@ -104,13 +107,15 @@ KOKKOS_FORCEINLINE_FUNCTION void mdr_growth_add_side(const MdrGrowthState<T, Dev
   const bool contributes = gs.rule == MdrGrowthRule::plastic_loading ? plastic_loading : (yielded && delta > T(0));
   if (contributes) {
     const T ddo = delta_o - delta_o_prev;
-    T num = -pi * ddo * (T(2) * delta_o * R0 - delta_o * delta_o + R * R - R0 * R0);
+    // the cap's sphere: R (its R_o: R0), or R_cap (its R_o: R_cap - (R - R0))
+    const T Rc = R_cap > T(0) ? R_cap : R, Rc0 = R_cap > T(0) ? R_cap - (R - R0) : R0;
+    T num = -pi * ddo * (T(2) * delta_o * Rc0 - delta_o * delta_o + Rc * Rc - Rc0 * Rc0);
     if (gs.rule == MdrGrowthRule::plastic_loading) {
       const T V0 = T(4) / T(3) * pi * R0 * R0 * R0;
       num -= V0 * (eps - eps_prev);
     }
     acc(p, int(MdrGrowthState<T, Device>::kNumerator)) += num;
-    acc(p, int(MdrGrowthState<T, Device>::kDenominator)) += T(2) * pi * R * (delta_o + R - R0);
+    acc(p, int(MdrGrowthState<T, Device>::kDenominator)) += T(2) * pi * Rc * (delta_o + R - R0);
   }
   delta_o_prev = delta_o;
   eps_prev = eps;
@@ -145,7 +150,7 @@ void mdr_update_radii(const MdrGrowthState<T, Device>& gs, int count = -1) {
         const T V_new = V0 * factor;
         // Delta V^e of the whole particle, only when a side contributes (den > 0: each adds
         // 2 pi R delta > 0): else an elastic particle's volume recovering on unloading grew R
-        if (s.rule == MdrGrowthRule::all_contacts && den > T(0)) num -= V_new - s.volume(p);
+        if (s.rule == MdrGrowthRule::yielded_contacts && den > T(0)) num -= V_new - s.volume(p);
         // (37). D < 0 in normal use; near 0 under high confinement (Appendix C): floored.
         T D = den - T(4) * pi * R * R;
         const T D_max = -s.denominator_floor * T(4) * pi * R * R;

@@ -21,6 +21,7 @@ struct MdrEvaluation {
   MdrSideState<T> before[2];      // the states the side law started from (store_changed)
   MdrSideResult<T> res[2];        // the sides' results
   T dside[2] = {T(0), T(0)};      // the sides' apparent overlaps
+  T R_cap[2] = {T(0), T(0)};      // MdrPairSplit::equal_pair: the sides' radii R'_s (growth caps)
 };
 
 // Sides ordered by global id; a wall has one side (side 0 = particle i).
