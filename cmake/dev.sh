@@ -7,7 +7,8 @@
 #   bash cmake/dev.sh fuzz [Catch2 options]                 builds test_fuzz and runs the long fuzz
 #       (docs/stability.md): EPAC_FUZZ_PATHS random paths per law and precision, each a wall and
 #       a pair contact (default 500000: 1e6 contact paths), all five laws in double and float;
-#       EPAC_FUZZ_LAWS=mdr runs only the laws whose name contains it. About 50 min of CPU on one
+#       EPAC_FUZZ_LAWS=mdr runs only the laws whose name contains it (more options, e.g. one
+#       precision or a first path index: tests/stability/test_fuzz_paths.cpp). About 50 min of CPU on one
 #       core (67 min wall on this project's busy 2-core machine): EPAC_THREADS=1 bash cmake/dev.sh fuzz
 #   bash cmake/dev.sh device                                builds for this machine's NVIDIA GPU and
 #       runs the test suite, the benchmarks and the scaling script on it (cmake/device-run.sh)

@@ -23,6 +23,10 @@
 // grid: at size ratios near 100 that spacing is up to 1e-5 R_min at the origin, and hysteretic
 // cycles of small amplitude then appear to create energy. docs/stability.md has the measurements.)
 // Parameters that `create` rejects are drawn again and counted.
+// first > 0 (the long test's EPAC_FUZZ_FIRST): the groups of paths before the one that holds path
+// `first` are drawn (every random draw, in the same order) but not run or checked, so a run can
+// start near a path index a longer run reported, with the same paths from there on; the counts
+// then cover the paths from the group that holds `first` (paths still counts all, skipped too).
 #include "stability_helpers.hpp"
 
 #include <cmath>
@@ -126,7 +130,7 @@ inline std::vector<int> fuzz_grid_walk(FuzzRng& r, int N) {
 // decrease with refine); the finite paths hold each node `refine` steps, and the random draws
 // per step happen once per `refine` steps, so the paths drawn are those of refine = 1.
 template <class Make, class T, class D = DefaultDevice>
-FuzzCounts fuzz_paths(long n_paths, std::uint64_t seed, int group = 512, int refine = 1) {
+FuzzCounts fuzz_paths(long n_paths, std::uint64_t seed, int group = 512, int refine = 1, long first = 0) {
   using Model = typename Make::M;
   FuzzCounts c;
   FuzzRng r(seed);
@@ -275,8 +279,23 @@ FuzzCounts fuzz_paths(long n_paths, std::uint64_t seed, int group = 512, int ref
     std::vector<int> bad(G, 0);                                     // 1 NaN, 2 Inf
     const double tc_min = 3.0 * Rg * std::sqrt(2500.0 / 1e12);
     double dt_held = 0;
+    const bool skip = c.paths + G <= first;  // drawn, not run (EPAC_FUZZ_FIRST)
     for (int s = 0; s < S; ++s) {
       const bool draw = s % refine == 0;
+      if (skip) {  // the draws of the step below, in its order, and nothing else
+        if (draw) {
+          for (int i = 0; i < G; ++i)
+            if (!energy[i])
+              for (int q = 0; q < 3; ++q)
+                for (int d = 0; d < 3; ++d) {
+                  (void)r.u(-100, 100);
+                  (void)r.u(-100, 100);
+                }
+          const double tc = 3.0 * std::max(Rg, 1e-7) * std::sqrt(2500.0 / 1e5);
+          dt_held = r.log_u(1e-12, std::max(10.0 * tc, 1e-11));
+        }
+        continue;
+      }
       if (draw) {
         Kokkos::deep_copy(v, T(0));
         Kokkos::deep_copy(om, T(0));
@@ -356,6 +375,10 @@ FuzzCounts fuzz_paths(long n_paths, std::uint64_t seed, int group = 512, int ref
         }
       }
     }
+    if (skip) {
+      c.paths += G;
+      continue;
+    }
     auto Rstart = to_host(p.radius0);
     auto Rend = to_host(p.radius);
     for (int i = 0; i < G; ++i) {
@@ -374,12 +397,17 @@ FuzzCounts fuzz_paths(long n_paths, std::uint64_t seed, int group = 512, int ref
         const double in = Win[2 * i + e], out = Wout[2 * i + e];
         if (!(in > 0)) continue;
         const double rel = (out - in) / in;
+        if (const char* dp = std::getenv("EPAC_FUZZ_DUMP_PATH"))  // one path's cycles, whatever they gave
+          if (std::atol(dp) == c.paths + i)
+            std::printf("PATH %ld %s rel %.6g in %.9g out %.9g\n", c.paths + i, e ? "pair" : "wall", rel, in, out);
         if (is_mdr && e == 1 && plastic_pair[i]) {
           ++c.plastic_pair_checked;
           c.worst_plastic_pair = std::max(c.worst_plastic_pair, rel);
           if (out > in * (1 + tol_energy)) {
             ++c.plastic_pair_energy_created;
             if (std::getenv("EPAC_FUZZ_DUMP")) {
+              std::printf("PAIR path %ld at %.4g m rel %.4g in %.6g out %.6g\n", c.paths + i, norm(p_point[i]), rel, in,
+                          out);
               std::printf("PAIR rel %.4g Ra %.4g Rb %.4g EA %.4g nuA %.3g YA %.4g EB %.4g nuB %.3g YB %.4g\n", rel,
                           Ra[i], Rb[i], mats[mA[i]].youngs_modulus, mats[mA[i]].poisson_ratio, mats[mA[i]].yield_stress,
                           mats[mB[i]].youngs_modulus, mats[mB[i]].poisson_ratio, mats[mB[i]].yield_stress);

@@ -3,6 +3,18 @@
 // 1e4 contact paths) per law and precision; the hidden "[.long]" test runs EPAC_FUZZ_PATHS of them
 // (default 5e5: 1e6 contact paths) and prints the counts: `bash cmake/dev.sh fuzz`, or
 // EPAC_FUZZ_PATHS=500000 test_fuzz "[.long]".
+// Options of the long test (environment):
+//   EPAC_FUZZ_LAWS=name   only the laws whose name contains it ("mdr": mdr and mdr+growth);
+//                         with a leading '=' only the law of exactly that name ("=mdr")
+//   EPAC_FUZZ_TYPES=float only that precision (float or double)
+//   EPAC_FUZZ_REFINE=N    the same paths on an N times finer grid (fuzz_paths.hpp)
+//   EPAC_FUZZ_FIRST=k     paths before the group that holds path k are drawn but not run (to
+//                         rerun the paths near an index a longer run reported; fuzz_paths.hpp)
+//   EPAC_FUZZ_SEED=s      every law runs with seed s instead of its own (1001 to 1010 in the
+//                         order below): the same paths through another law, e.g. mdr+growth's
+//                         float paths (1010) through mdr without growth
+//   EPAC_FUZZ_DUMP=1      prints the path of every MDR pair cycle that created energy
+//   EPAC_FUZZ_DUMP_PATH=k prints the work put in and returned on path k's closed cycles
 #include "fuzz_paths.hpp"
 
 #include <catch2/catch.hpp>
@@ -17,8 +29,8 @@ using namespace epac::test;
 
 namespace {
 template <template <class> class Make, class T>
-FuzzCounts run_law(long n, std::uint64_t seed, int refine = 1) {
-  return fuzz_paths<Make<T>, T>(n, seed, 512, refine);
+FuzzCounts run_law(long n, std::uint64_t seed, int refine = 1, long first = 0) {
+  return fuzz_paths<Make<T>, T>(n, seed, 512, refine, first);
 }
 
 template <template <class> class Make, class T>
@@ -36,12 +48,20 @@ void check_law(long n, std::uint64_t seed) {
 
 template <template <class> class Make, class T>
 void report_law(long n, std::uint64_t seed) {
-  // EPAC_FUZZ_LAWS: only the laws whose name contains it (e.g. "mdr"); EPAC_FUZZ_REFINE: see fuzz_paths
+  // the options: see the header
   const char* laws = std::getenv("EPAC_FUZZ_LAWS");
-  if (laws && std::string(Make<T>::name).find(laws) == std::string::npos) return;
+  const std::string name = Make<T>::name;
+  if (laws && laws[0] == '=' && name != laws + 1) return;
+  if (laws && laws[0] != '=' && name.find(laws) == std::string::npos) return;
+  const char* types = std::getenv("EPAC_FUZZ_TYPES");
+  if (types && std::string(types) != (sizeof(T) == 4 ? "float" : "double")) return;
   const char* ref = std::getenv("EPAC_FUZZ_REFINE");
+  const char* first = std::getenv("EPAC_FUZZ_FIRST");
+  const char* seed_env = std::getenv("EPAC_FUZZ_SEED");
+  if (seed_env) seed = std::strtoull(seed_env, nullptr, 10);
   const auto start = std::chrono::steady_clock::now();
-  const FuzzCounts c = run_law<Make, T>(n, seed, ref ? std::max(1, std::atoi(ref)) : 1);
+  const FuzzCounts c =
+      run_law<Make, T>(n, seed, ref ? std::max(1, std::atoi(ref)) : 1, first ? std::max(0L, std::atol(first)) : 0);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::printf(
       "%-14s %-6s paths %8ld contacts %10ld rejected %6ld NaN %ld Inf %ld energy created %ld of %ld "

@@ -206,20 +206,18 @@ struct Mdr {
   // history; hosts can size neighbour lists with it. Needs Eff::adhesion for a value below the
   // residual overlaps.
   KOKKOS_INLINE_FUNCTION T critical_overlap(const ContactGeometry<T>& g, const HistoryRow<T, Device>& row) const {
-    const detail::MdrEvaluation<T> e = detail::mdr_order_sides(g);
+    detail::MdrEvaluation<T> e = detail::mdr_order_sides(g);
     const MdrPairConstants<T>& pc = pairs(g.pair);
-    const bool grows = Eff::radius_growth && growth.bound();
+    // R_o and the shifts R - R_o as evaluate loads them (one helper, so the two cannot differ;
+    // without growth e.R0s = e.Rs and no shift)
+    if (Eff::radius_growth && growth.bound()) load_growth(e);
     T critical = T(0);
-    T grown[2] = {T(0), T(0)}, R[2] = {e.Rs[0], e.Rs[1]};
-    for (int s = 0; s < e.nsides; ++s) grown[s] = grows ? growth_in_max * (e.Rs[s] - growth.radius0(e.part[s])) : T(0);
+    T R[2] = {e.Rs[0], e.Rs[1]};
     if (e.is_pair && equal_pair_split) {
       // the equivalent equal pair's sides (detail/mdr_pair_equal.hpp)
       const bool b0 = e.swap;  // side 0 is material b when swapped
-      T R0o[2] = {e.Rs[0], e.Rs[1]};
-      if (grows)
-        for (int s = 0; s < 2; ++s) R0o[s] = growth.radius0(e.part[s]);
       const MdrEqualPair<T> q = mdr_equal_pair_grown(
-          e.Rs[0], e.Rs[1], R0o[0], R0o[1], (b0 ? pc.side_b : pc.side_a).E_eff, (b0 ? pc.side_a : pc.side_b).E_eff);
+          e.Rs[0], e.Rs[1], e.R0s[0], e.R0s[1], (b0 ? pc.side_b : pc.side_a).E_eff, (b0 ? pc.side_a : pc.side_b).E_eff);
       for (int s = 0; s < 2; ++s) R[s] = q.R[s];  // each side's own growth, as in equal_pair_sides
     }
     for (int s = 0; s < e.nsides; ++s) {
@@ -227,7 +225,7 @@ struct Mdr {
       const MdrSideState<T> st = load_side(row, s);  // reads delta_o,max, yielded, c_A
       const T gamma_s = Eff::adhesion ? (side_b ? pc.gamma_b : pc.gamma_a) : T(0);
       critical +=
-          mdr_side_critical_overlap<Eff::plasticity>(side_b ? pc.side_b : pc.side_a, gamma_s, R[s], grown[s], st);
+          mdr_side_critical_overlap<Eff::plasticity>(side_b ? pc.side_b : pc.side_a, gamma_s, R[s], e.growth_of[s], st);
     }
     return critical;
   }
@@ -445,6 +443,7 @@ struct Mdr {
     } else {
       const T guess = balance_guess(g, row, e);
       d0 = mdr_balance_split(ps, g.delta, guess, e.Rs[0] + e.Rs[1]);
+      ps.forces_at_root(mdr_balance_tolerance<T>());  // the forces at the root (mdr_pair_balance.hpp)
     }
     for (int s = 0; s < 2; ++s) {
       e.dside[s] = ps.d[s];
@@ -483,8 +482,10 @@ struct Mdr {
     T d0 = e.dside[0];
     if (pc.same_material)
       ps(d0);
-    else
+    else {
       d0 = mdr_balance_split(ps, g.delta, balance_guess(g, row, e), q.R[0] + q.R[1]);
+      ps.forces_at_root(mdr_balance_tolerance<T>());  // the forces at the root (mdr_pair_balance.hpp)
+    }
     for (int s = 0; s < 2; ++s) {
       e.dside[s] = ps.d[s];
       e.st[s] = ps.st[s];

@@ -64,7 +64,10 @@ KOKKOS_INLINE_FUNCTION constexpr int mdr_balance_max_evaluations() {
 // Relative tolerance of the balance (of the scaled forces, and of the bracket against the
 // overlaps): 1e-10 in double, 8 ulps (9.5e-7) in float. Far below any physical effect; the pair's
 // work equals the passive combination of the sides' to that order (elastic pairs exactly: their
-// first guess is deterministic). Why not a few ulps: from the last pass's split one Newton step
+// first guess is deterministic), once the sides' forces are moved to the root
+// (MdrPairSides::forces_at_root: a split located to the spacing of d_0 leaves a stiff side's
+// force off by its stiffness times that, up to 9e-4 of F at stiffness ratios of 1e4 in float).
+// Why not a few ulps: from the last pass's split one Newton step
 // lands within ~1e-12 of the root in a quasi-static packing, so the tolerance decides between
 // two evaluations of the pair per contact and three (measured on LAMMPS's fcc scene: 550 ns per
 // contact at 64 ulps).
@@ -205,6 +208,29 @@ struct MdrPairSides {
   // dg/dd_0 from the sides' stiffnesses dF_s/dd_s (MdrSideResult::stiffness)
   KOKKOS_INLINE_FUNCTION T slope() const { return lambda[0] * r[0].stiffness + lambda[1] * r[1].stiffness; }
   KOKKOS_INLINE_FUNCTION T last_x() const { return x_last; }
+  // After the solve: the sides' forces at the root, to first order from the last evaluation
+  // (d_0): with g and the slope of that evaluation the root is d_0 - s, s = g / slope, so
+  // F_0 -= k_0 s and F_1 += k_1 s (lambda_0 F_0 = lambda_1 F_1 then holds to second order in s).
+  // Why: the root is only located to the spacing of d_0 (float: d_0 ~ delta, a spacing of
+  // 6e-8 delta; the solve stops within 8 spacings, or on a Newton step below one), and a stiff
+  // side's force moves by its
+  // k times that spacing: a soft elastic side on a stiff yielded one (k_1/k_0 ~ 1e4) carried
+  // |F_0 - F_1| up to 9e-4 of F at the returned split, so the mean force (the pair's) was off the
+  // balanced force by half that, in a way that depended on the warm start: on the fuzz's
+  // quasi-static cycles of such pairs (nearly elastic, dissipating less than that) the pair
+  // returned up to 2.1e-4 more work than it took (docs/stability.md). At the root the pair force
+  // is the balanced force, whose error is the float round-off of the soft side's force. Applied
+  // only when the correction stays within the solve's resolution, tol max(|d_0|, |delta|) (a
+  // solve stopped by its budget, or a side without stiffness, e.g. separated, keeps its forces).
+  KOKKOS_INLINE_FUNCTION void forces_at_root(T tol) {
+    const T k0 = r[0].stiffness, k1 = r[1].stiffness;
+    if (!(k0 > T(0) && k1 > T(0))) return;
+    const T g = lambda[0] * r[0].F - lambda[1] * r[1].F;
+    const T step = g / (lambda[0] * k0 + lambda[1] * k1);  // d_0 - d_0,root
+    if (!(math::fabs(step) <= tol * math::max(math::fabs(d[0]), math::fabs(delta)))) return;
+    r[0].F -= k0 * step;
+    r[1].F += k1 * step;
+  }
   // Where to put d_0 when one side is free of force (F = 0) and the other is not: the other
   // side's zero-force overlap (its residual delta_p once yielded, else 0), so that both forces
   // vanish, or, if that compresses the free side, a bracket end. False where it is not known: no
