@@ -66,6 +66,51 @@ TEMPLATE_LIST_TEST_CASE("jkr contact radius: edges of the solve", "[jkr][edge]",
   CHECK(x(n - 1) == Approx(std::sqrt(1e6)).epsilon(1e-4));  // Hertz-like for deep overlap
 }
 
+// The warm-started solve (jkr_contact_radius_root, what the model runs every step) must give the
+// closed form's root whatever the guess: near guesses (a step of a moving contact), far ones
+// (a restart's contact state 1, a jump in overlap), none, and overlaps at the edges (just above
+// d_c, where Newton is ill-conditioned and must hand over to the closed form; beyond 1e6).
+TEMPLATE_LIST_TEST_CASE("jkr contact radius: the warm-started root is the closed form's", "[jkr][edge]",
+                        test::BackendsAndScalars) {
+  using D = typename TestType::device;
+  using T = typename TestType::scalar;
+  const double dc = -0.75 * std::cbrt(0.25);
+  const double ds[] = {dc * (1 - 1e-6), dc * (1 - 1e-3), -0.3, 0.0, 1e-3, 0.7, 1.0, 30.0, 1e2, 1e4, 1e6, 2e6};
+  const double rel[] = {0.0, 1.0, 1 + 1e-7, 1 - 1e-5, 1 + 1e-3, 1 - 0.05, 1.5, 0.5, 10.0};  // guess / root
+  const int nd = sizeof(ds) / sizeof(ds[0]), ng = sizeof(rel) / sizeof(rel[0]), n = nd * (ng + 1);
+  Kokkos::View<T*, D> d_in("d", n), g_in("guess", n), warm("warm", n), closed("closed", n);
+  auto dh = Kokkos::create_mirror_view(d_in);
+  auto gh = Kokkos::create_mirror_view(g_in);
+  for (int a = 0; a < nd; ++a) {
+    const double root = std::sqrt(jkr_contact_radius_ratio(ds[a]));
+    for (int b = 0; b <= ng; ++b) {
+      dh(a * (ng + 1) + b) = T(ds[a]);
+      gh(a * (ng + 1) + b) = b < ng ? T(rel[b] * root) : T(1);  // 1: an old contact-state flag
+    }
+  }
+  Kokkos::deep_copy(d_in, dh);
+  Kokkos::deep_copy(g_in, gh);
+  Kokkos::parallel_for(
+      Kokkos::RangePolicy<typename D::execution_space>(0, n), KOKKOS_LAMBDA(int k) {
+        warm(k) = jkr_contact_radius_root(d_in(k), g_in(k));
+        closed(k) = math::sqrt(jkr_contact_radius_ratio(d_in(k)));
+      });
+  auto w = test::to_host(warm);
+  auto c = test::to_host(closed);
+  // Both are roots to round-off: the closed form is polished by a Newton step, the warm start
+  // accepted when its next correction is below 2 eps y, so they differ by a few ulps, except
+  // within ~sqrt(eps) of d_c, where the root itself is only that accurate (the double root of
+  // the edge test above) and the warm start hands over to the closed form.
+  const double eps = sizeof(T) == 4 ? 1.2e-7 : 2.2e-16;
+  for (int k = 0; k < n; ++k) {
+    INFO("d = " << dh(k) << ", guess = " << gh(k) << ", warm = " << w(k) << ", closed = " << c(k));
+    const double y = w(k), d = dh(k);
+    CHECK(y == Approx(c(k)).epsilon(16 * eps));
+    CHECK(y * y * y * y - y - d == Approx(0.0).margin(16 * eps * std::max(1.0, std::fabs(d))));
+    CHECK(y * y >= jkr_critical_radius_ratio<double>() * (1 - 4 * eps));
+  }
+}
+
 TEMPLATE_LIST_TEST_CASE("jkr loop: -8/9 f_ce at zero overlap, pull-off -1.5 pi Gamma R*, detachment at delta_c",
                         "[jkr]", test::BackendsAndScalars) {
   using D = typename TestType::device;

@@ -153,8 +153,10 @@ KOKKOS_FORCEINLINE_FUNCTION void finish_contact(const Model& model, const Conv& 
     return;
   }
   T fn = nf.f;
+  T root_mkn = T(0);  // sqrt(m_eff k_n), shared by the tangential damping where the law allows
   if (Eff::damping) {
-    const T fd = nf.damping * math::sqrt_nonneg(g.m_eff * nf.k_n) * g.delta_dot;
+    root_mkn = math::sqrt_nonneg(g.m_eff * nf.k_n);
+    const T fd = nf.damping * root_mkn * g.delta_dot;
     if (!nf.damp_compressive_only)
       fn += fd;
     else if (fn > T(0))
@@ -172,7 +174,10 @@ KOKKOS_FORCEINLINE_FUNCTION void finish_contact(const Model& model, const Conv& 
       v_t = v_rel - vn * g.n - cross(w_full, g.n);
       if (!IsPair) arm_i = g.R_i;
     }
-    const T damp_t = Eff::damping ? nf.damping_t * math::sqrt_nonneg(g.m_eff * nf.k_t) : T(0);
+    // sqrt(m k_t) = sqrt(m k_n) sqrt(k_t/k_n) where k_t/k_n is fixed (both >= 0 or both clamped to 0)
+    const T damp_t = !Eff::damping             ? T(0)
+                     : nf.kt_root_ratio > T(0) ? nf.damping_t * root_mkn * nf.kt_root_ratio
+                                               : nf.damping_t * math::sqrt_nonneg(g.m_eff * nf.k_t);
     // history in the frame of the smaller global id (walls: the particle's)
     const T orient = (!IsPair || g.i_is_first) ? T(1) : T(-1);
     NormalForce<T> nft = nf;

@@ -90,6 +90,8 @@ KOKKOS_INLINE_FUNCTION constexpr T sign(T x) {
 template <class T>
 struct constants {
   static constexpr T pi = T(3.14159265358979323846264338327950288);
+  // machine epsilon of float or double (Kokkos's numeric traits are not in every version we support)
+  static constexpr T epsilon = sizeof(T) == sizeof(float) ? T(1.1920928955078125e-7) : T(2.220446049250313e-16);
 };
 
 // Host mirror type, spelled the same way on every Kokkos version.

@@ -35,6 +35,9 @@ struct NormalForce {
                                        // the law's contact_conventions say damp_may_pull)
   T k_t = 0;                           // tangential stiffness
   T damping_t = 0;                     // tangential viscous coefficient: F_td = -damping_t sqrt(m_eff k_t) v_t
+  T kt_root_ratio = 0;                 // sqrt(k_t/k_n) where the law's k_t is a fixed multiple of k_n: the
+                                       // kernel then takes sqrt(m_eff k_t) as sqrt(m_eff k_n) times this (one
+                                       // square root for both dampings); 0: it takes sqrt(m_eff k_t)
   T mu = 0;                            // Coulomb friction coefficient
   bool active = false;                 // false: the surfaces are apart; tangential history is reset
 };

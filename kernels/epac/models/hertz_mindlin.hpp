@@ -19,6 +19,7 @@ namespace epac {
 template <class T>
 struct HertzMindlinPair {
   T E_star, kt_over_kn, c_damp, mu;
+  T kt_root;  // sqrt(kt_over_kn): one square root for both dampings (contact_geometry.hpp)
 };
 
 template <class T, class Eff = Effects<kFriction | kDamping>, class Device = DefaultDevice>
@@ -48,6 +49,7 @@ struct HertzMindlin {
     }
     if (Eff::friction) {
       r.k_t = p.kt_over_kn * r.k_n;
+      r.kt_root_ratio = p.kt_root;
       r.mu = p.mu;
     }
     return r;
@@ -65,7 +67,7 @@ struct HertzMindlin {
         const Material& A = materials[a];
         const Material& B = materials[b];
         if (A.rigid && B.rigid) {
-          h(a * m.nmat + b) = {T(0), T(0), T(0), T(0)};
+          h(a * m.nmat + b) = {T(0), T(0), T(0), T(0), T(0)};
           continue;
         }
         const PairProperties pp = pair_properties(A, B);
@@ -73,7 +75,7 @@ struct HertzMindlin {
         require_representable<T>("hertz_mindlin: E_star", pp.E_star, from);
         require_representable<T>("hertz_mindlin: kt_over_kn", 4.0 * pp.G_star / pp.E_star, from);
         h(a * m.nmat + b) = {T(pp.E_star), T(4.0 * pp.G_star / pp.E_star), T(hertz_damping_coefficient(pp.restitution)),
-                             T(pp.friction)};
+                             T(pp.friction), T(std::sqrt(4.0 * pp.G_star / pp.E_star))};
       }
     Kokkos::deep_copy(m.pairs, h);
     return m;

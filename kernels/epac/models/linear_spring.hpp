@@ -14,6 +14,7 @@ namespace epac {
 template <class T>
 struct LinearSpringPair {
   T k_n, kt_over_kn, c_damp, mu;
+  T kt_root;  // sqrt(kt_over_kn): one square root for both dampings (contact_geometry.hpp)
 };
 
 template <class T, class Eff = Effects<kFriction | kDamping>, class Device = DefaultDevice>
@@ -41,6 +42,7 @@ struct LinearSpring {
     }
     if (Eff::friction) {
       r.k_t = p.kt_over_kn * p.k_n;
+      r.kt_root_ratio = p.kt_root;
       r.mu = p.mu;
     }
     return r;
@@ -57,12 +59,12 @@ struct LinearSpring {
     for (int a = 0; a < m.nmat; ++a)
       for (int b = 0; b < m.nmat; ++b) {
         if (materials[a].rigid && materials[b].rigid) {
-          h(a * m.nmat + b) = {T(0), T(0), T(0), T(0)};
+          h(a * m.nmat + b) = {T(0), T(0), T(0), T(0), T(0)};
           continue;
         }
         const PairProperties pp = pair_properties(materials[a], materials[b]);
         h(a * m.nmat + b) = {T(k_n), T(4.0 * pp.G_star / pp.E_star), T(2.0 * linear_damping_ratio(pp.restitution)),
-                             T(pp.friction)};
+                             T(pp.friction), T(std::sqrt(4.0 * pp.G_star / pp.E_star))};
       }
     Kokkos::deep_copy(m.pairs, h);
     return m;

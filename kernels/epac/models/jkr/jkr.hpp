@@ -4,7 +4,9 @@
 //   f = 4 E* a^3/(3 R*) - sqrt(8 pi Gamma E*) a^(3/2)          (B1)
 //   the contact forms at delta = 0 (f = -8/9 f_ce) and breaks at the critical overlap
 //   delta_c = -(3/4) (pi^2 Gamma^2 R* / E*^2)^(1/3) (f = -5/9 f_ce): a hysteresis, so one history
-//   field (contact state) when adhesion is on. Force-controlled pull-off: -1.5 pi Gamma R*.
+//   field when adhesion is on: 0 apart, and in contact the last root y = sqrt(a/a_0) > 0, from
+//   which the next step's solve starts (jkr_contact_radius_root: a Newton step or two instead of
+//   the closed form's cube roots). Force-controlled pull-off: -1.5 pi Gamma R*.
 //   k_n = 2 E* a: the Hertz stiffness at the JKR contact radius. The exact tangent (B2) is
 //   infinite at delta_c and negative between delta_c and the pull-off point, unusable for damping
 //   and k_t; for f > 0 it is within ~4% of 2 E* a (Nan (B13)). So k_t = (4 G*/E*) k_n = 8 G* a.
@@ -25,6 +27,7 @@ template <class T>
 struct JkrPair {
   T E_star, surface_energy, kt_over_kn, c_damp, mu;
   T a0_coeff;  // (2 pi Gamma / E*)^(1/3): a_0 = a0_coeff R*^(2/3), (B5), one cube root per contact
+  T kt_root;   // sqrt(kt_over_kn): one square root for both dampings (contact_geometry.hpp)
 };
 
 template <class T, class Eff = Effects<kAdhesion | kFriction | kDamping>, class Device = DefaultDevice>
@@ -33,7 +36,7 @@ struct Jkr {
   using effects = Eff;
   using device_type = Device;
   static constexpr const char* name = "jkr";
-  static constexpr int normal_history_size = Eff::adhesion ? 1 : 0;  // contact state
+  static constexpr int normal_history_size = Eff::adhesion ? 1 : 0;  // contact state and radius root
   static constexpr int history_size = normal_history_size + (Eff::friction ? 3 : 0);
 
   Kokkos::View<JkrPair<T>*, Device> pairs;
@@ -45,21 +48,20 @@ struct Jkr {
     const T gamma = Eff::adhesion ? p.surface_energy : T(0);
     T a;
     if (gamma > T(0)) {
-      T cs = row(0);
-      if (cs == T(0)) {
-        if (g.delta < T(0)) return r;  // contact forms at delta = 0
-        cs = T(1);
-      }
+      // row(0): 0 apart; in contact, y = sqrt(a/a_0) of the last evaluation (> 0), the warm start
+      // of the radius solve (jkr_contact_radius_root)
+      const T y_last = row(0);
+      if (y_last == T(0) && g.delta < T(0)) return r;  // contact forms at delta = 0
       const JkrScales<T> s = jkr_scales_from(p.a0_coeff, gamma, g.R_eff);
       const T d = g.delta / s.delta_s;                // delta_s > 0
       if (!(d >= jkr_critical_overlap_ratio<T>())) {  // breaks at the critical overlap
         row(0) = T(0);
         return r;
       }
-      row(0) = cs;
-      const T x = jkr_contact_radius_ratio(d);
-      a = x * s.a0;
-      r.f = s.f_ce * jkr_force_ratio(x);
+      const T y = jkr_contact_radius_root(d, y_last);
+      row(0) = y;
+      a = y * y * s.a0;
+      r.f = s.f_ce * jkr_force_ratio_of_root(y);
     } else {
       if (Eff::adhesion) row(0) = T(0);
       if (g.delta <= T(0)) return r;
@@ -74,6 +76,7 @@ struct Jkr {
     }
     if (Eff::friction) {
       r.k_t = p.kt_over_kn * r.k_n;
+      r.kt_root_ratio = p.kt_root;
       r.mu = p.mu;
     }
     return r;
@@ -91,7 +94,7 @@ struct Jkr {
         const Material& A = materials[a];
         const Material& B = materials[b];
         if (A.rigid && B.rigid) {
-          h(a * m.nmat + b) = {T(0), T(0), T(0), T(0), T(0), T(0)};
+          h(a * m.nmat + b) = {T(0), T(0), T(0), T(0), T(0), T(0), T(0)};
           continue;
         }
         const PairProperties pp = pair_properties(A, B);
@@ -106,7 +109,8 @@ struct Jkr {
                              T(4.0 * pp.G_star / pp.E_star),
                              T(hertz_damping_coefficient(pp.restitution)),
                              T(pp.friction),
-                             T(std::cbrt(2.0 * constants<double>::pi * pp.surface_energy / pp.E_star))};
+                             T(std::cbrt(2.0 * constants<double>::pi * pp.surface_energy / pp.E_star)),
+                             T(std::sqrt(4.0 * pp.G_star / pp.E_star))};
       }
     Kokkos::deep_copy(m.pairs, h);
     return m;

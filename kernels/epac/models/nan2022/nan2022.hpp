@@ -31,15 +31,20 @@ struct Nan2022 {
   static constexpr int history_size = normal_history_size + (Eff::friction ? 3 : 0);
 
   Kokkos::View<Nan2022PairConstants<T>*, Device> pairs;
+  Kokkos::View<Nan2022PairDerived<T>*, Device> derived;  // the roots of pairs(k), taken on the host
   int nmat = 0;
 
-  KOKKOS_INLINE_FUNCTION NormalForce<T> normal(const ContactGeometry<T>& g, const HistoryRow<T, Device>& row) const {
+  KOKKOS_FORCEINLINE_FUNCTION NormalForce<T> normal(const ContactGeometry<T>& g,
+                                                    const HistoryRow<T, Device>& row) const {
     const Nan2022PairConstants<T> p = pairs(g.pair);
-    const Nan2022ContactConstants<T> c = nan2022_contact_constants<T, Eff::adhesion, Eff::plasticity>(p, g.R_eff);
+    const Nan2022PairDerived<T> d = derived(g.pair);
+    const T R = g.R_eff;
+    const Nan2022ContactConstants<T> c = nan2022_contact_base<T, Eff::adhesion, Eff::plasticity>(p, d, R);
     T alpha_max = Eff::plasticity ? row(alpha_max_field) : T(0);
     T cs = Eff::adhesion ? row(state_field) : T(0);
-    const Nan2022NormalState<T> s =
-        nan2022_normal_step<T, Eff::plasticity>(c, g.delta, alpha_max, cs, p.unloading_law, p.pull_off_law);
+    const Nan2022FillCohesive<T, Eff::adhesion> fill_cohesive{d, R};
+    const Nan2022NormalState<T> s = nan2022_normal_step<T, Eff::plasticity>(c, g.delta, alpha_max, cs, p.unloading_law,
+                                                                            p.pull_off_law, fill_cohesive);
     if (Eff::plasticity) row(alpha_max_field) = alpha_max;
     if (Eff::adhesion) row(state_field) = cs;
     NormalForce<T> r;
@@ -54,6 +59,7 @@ struct Nan2022 {
     }
     if (Eff::friction) {
       r.k_t = p.kt_over_kn * r.k_n;
+      r.kt_root_ratio = d.kt_root;
       r.mu = p.mu;
     }
     return r;
@@ -67,7 +73,9 @@ struct Nan2022 {
     Nan2022 m;
     m.nmat = nmat;
     m.pairs = Kokkos::View<Nan2022PairConstants<T>*, Device>("nan2022.pairs", nmat * nmat);
+    m.derived = Kokkos::View<Nan2022PairDerived<T>*, Device>("nan2022.derived", nmat * nmat);
     auto h = Kokkos::create_mirror_view(m.pairs);
+    auto hd = Kokkos::create_mirror_view(m.derived);
     for (int k = 0; k < nmat * nmat; ++k) {
       const Nan2022PairConstants<double>& d = table[k];
       // a rigid-rigid entry is all zero (never used): skip its validation
@@ -81,6 +89,17 @@ struct Nan2022 {
         require_representable<T>(name + ": k_el value", d.kel_value, from);
         require_representable<T>(name + ": k_p value", d.kp_value, from);
         require_representable<T>(name + ": kt_over_kn", d.kt_over_kn, from);
+        // the roots in double, rounded once
+        const Nan2022PairDerived<double> dd = nan2022_pair_derived(d);
+        require_representable<T>(name + ": yield force coefficient (Nan (28))", dd.f_y_coef, from);
+        require_representable<T>(name + ": cohesive ratio coefficient (Nan (38))", dd.cohesive_coef, from);
+        hd(k).f_y_coef = T(dd.f_y_coef);
+        hd(k).cohesive_coef = T(dd.cohesive_coef);
+        require_representable<T>(name + ": zero-force overlap f_0/k_el (Nan (6))", dd.alpha_0_prop, from);
+        require_representable<T>(name + ": yield overlap slope f_y/(k_el R*) (Nan (7))", dd.alpha_y_slope, from);
+        hd(k).alpha_0_prop = T(dd.alpha_0_prop);
+        hd(k).alpha_y_slope = T(dd.alpha_y_slope);
+        hd(k).kt_root = T(std::sqrt(d.kt_over_kn));
       }
       Nan2022PairConstants<T> t;
       t.E_star = T(d.E_star);
@@ -100,6 +119,7 @@ struct Nan2022 {
       h(k) = t;
     }
     Kokkos::deep_copy(m.pairs, h);
+    Kokkos::deep_copy(m.derived, hd);
     return m;
   }
 

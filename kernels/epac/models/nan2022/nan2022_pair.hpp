@@ -5,7 +5,8 @@
 //
 // Why per contact: f_ce = 1.5 pi Gamma R* (Nan (5)) and the default k_el = pi R* p_y (Nan (52))
 // scale with R*, so in a polydisperse packing every contact has its own constants. The pair table
-// keeps only what does not depend on size; this header derives the rest (a few sqrt/cbrt).
+// keeps only what does not depend on size, with the roots of its R*-free factors taken once per
+// pair (Nan2022PairDerived); this header derives the rest.
 #include <epac/core/kokkos_compat.hpp>
 
 namespace epac {
@@ -79,27 +80,71 @@ KOKKOS_INLINE_FUNCTION T cohesive_ratio_coefficient() {
 }
 }  // namespace nan2022_detail
 
-// Derives the contact's constants at equivalent radius R_star.
+// The R*-independent factors of a pair's contact constants, derived once per pair (the model
+// keeps them beside the pair table) so that a contact needs neither a square root nor a cube root
+// on its common branches (loading, elastic unloading):
+//   f_y        = f_y_coef R*^2            (k_el = kel_value R*, Nan (52))
+//              = f_y_coef R*^2 / sqrt(R*)  (fixed k_el)
+//   k_el/k_cl  = cohesive_coef k_el / cbrt(R*^2) - 17/56   (only needed on the adhesive branches)
+//   with k_el = kel_value R* also, division-free:
+//   alpha_0    = alpha_0_prop             (f_0 / k_el, R*-free)
+//   alpha_y    = alpha_0_prop + alpha_y_slope R*
+template <class T>
+struct Nan2022PairDerived {
+  T f_y_coef = 0;       // 0 when the pair does not yield
+  T cohesive_coef = 0;  // 0 when Gamma = 0
+  T alpha_0_prop = 0;   // read only when kel_fixed == 0
+  T alpha_y_slope = 0;  // read only when kel_fixed == 0 and the pair yields
+  T kt_root = 0;        // sqrt(kt_over_kn), set by the model's table (one square root for both dampings)
+};
+
+// Domains: E* > 0, p_y > 0 when yields, kel_value > 0, Gamma >= 0 (host-validated).
+template <class T>
+KOKKOS_INLINE_FUNCTION Nan2022PairDerived<T> nan2022_pair_derived(const Nan2022PairConstants<T>& p) {
+  const T pi = constants<T>::pi;
+  Nan2022PairDerived<T> d;
+  if (p.yields) {
+    // Nan (28) with (30): f_y = f_y0 sqrt(6/5 k_el / (pi R* p_y)), f_y0 = pi^3 R*^2 p_y s^2 / 6 with
+    // s = p_y/E* (Nan (27) rewritten so that no intermediate overflows in float: E*^4 would for
+    // E* > 1e9 Pa). With k_el = kel_value R* the root is R*-free; with a fixed k_el it is
+    // sqrt(6/5 kel_value/(pi p_y)) / sqrt(R*). sqrt argument > 0 (kel_value, p_y > 0).
+    const T s = p.yield_pressure / p.E_star;
+    d.f_y_coef = pi * pi * pi * p.yield_pressure * s * s / T(6) *
+                 math::sqrt(T(6) / T(5) * p.kel_value / (pi * p.yield_pressure));
+  }
+  if (!p.kel_fixed) {
+    // f_0 / k_el = (8/9) 1.5 pi Gamma R* / (kel_value R*); f_y / k_el = f_y_coef R* / kel_value
+    d.alpha_0_prop = T(8) / T(9) * (T(1.5) * pi * p.surface_energy) / p.kel_value;  // kel_value > 0
+    d.alpha_y_slope = d.f_y_coef / p.kel_value;
+  }
+  if (p.surface_energy > T(0)) {
+    // cbrt arguments Gamma > 0 and E*^2 > 0 (E*^2 <= 1e26 Pa^2 even in float for E* <= 1e13).
+    d.cohesive_coef = nan2022_detail::cohesive_ratio_coefficient<T>() /
+                      (math::cbrt(p.surface_energy) * math::cbrt(p.E_star * p.E_star));
+  }
+  return d;
+}
+
+// The contact's constants at equivalent radius R_star, except the cohesive ratio and A
+// (nan2022_cohesive_constants below), which only the adhesive branches read.
 // Domains: R_star > 0, E* > 0, k_el > 0, p_y > 0 (host-validated; R_star > 0 in every contact).
 // Adhesion / Plasticity are the compile-time effects: off means Gamma = 0 / no yield, at no cost.
 template <class T, bool Adhesion = true, bool Plasticity = true>
-KOKKOS_INLINE_FUNCTION Nan2022ContactConstants<T> nan2022_contact_constants(const Nan2022PairConstants<T>& p,
-                                                                            T R_star) {
+KOKKOS_INLINE_FUNCTION Nan2022ContactConstants<T> nan2022_contact_base(const Nan2022PairConstants<T>& p,
+                                                                       const Nan2022PairDerived<T>& d, T R_star) {
   const T pi = constants<T>::pi;
   Nan2022ContactConstants<T> c;
   const T gamma = Adhesion ? p.surface_energy : T(0);
   c.f_ce = T(1.5) * pi * gamma * R_star;
   c.f_0 = T(8) / T(9) * c.f_ce;
   c.k_el = p.kel_fixed ? p.kel_value : p.kel_value * R_star;
-  c.alpha_0 = c.f_0 / c.k_el;  // k_el > 0
+  // k_el > 0; with k_el = kel_value R* the ratios are per pair (Nan2022PairDerived)
+  c.alpha_0 = p.kel_fixed ? c.f_0 / c.k_el : (Adhesion ? d.alpha_0_prop : T(0));
   c.yields = Plasticity && p.yields != 0;
   if (c.yields) {
-    // Nan (28) with (30): f_y = f_y0 sqrt(6/5 k_el / (pi R* p_y)); written with s = p_y/E* so
-    // that no intermediate overflows in float (E*^4 of (27) would for E* > 1e9 Pa).
-    const T s = p.yield_pressure / p.E_star;
-    const T f_y0 = pi * pi * pi * R_star * R_star * p.yield_pressure * s * s / T(6);
-    c.f_y = f_y0 * math::sqrt(T(6) / T(5) * c.k_el / (pi * R_star * p.yield_pressure));  // arg > 0
-    c.alpha_y = c.alpha_0 + c.f_y / c.k_el;
+    const T r2 = d.f_y_coef * R_star * R_star;
+    c.f_y = p.kel_fixed ? r2 / math::sqrt(R_star) : r2;  // R_star > 0
+    c.alpha_y = p.kel_fixed ? c.alpha_0 + c.f_y / c.k_el : c.alpha_0 + d.alpha_y_slope * R_star;
     const T kp = p.kp_fixed ? p.kp_value : p.kp_value * c.k_el;
     // k_p <= k_el keeps k_e >= k_p on every unloading line (Nan's own convention for Fig. 7,
     // k_p = min(k_p, k_e)); otherwise the unloading line would be softer than the loading line
@@ -110,14 +155,21 @@ KOKKOS_INLINE_FUNCTION Nan2022ContactConstants<T> nan2022_contact_constants(cons
     c.alpha_y = c.alpha_0;
     c.k_p = c.k_el;
   }
-  if (c.f_ce > T(0)) {
-    // cbrt argument Gamma (E* R*)^2 > 0 here (Gamma > 0). A negative ratio means the linear
-    // elastic branch alone stores more than W_JKR (CY below ~1e-3 with Nan (52)); there is no
-    // room for a cohesive branch, so it is clamped to zero length (k_c -> infinity). The host
-    // report flags this case (Nan2022PairReport::cohesive_ratio_clamped).
-    const T er = p.E_star * R_star;
-    const T denom = math::cbrt(gamma) * math::cbrt(er * er);
-    c.el_over_cl = math::max(nan2022_detail::cohesive_ratio_coefficient<T>() * c.k_el / denom - T(17) / T(56), T(0));
+  c.el_over_cl = T(0);
+  c.A = T(0);
+  return c;
+}
+
+// Fills c.el_over_cl and c.A (Nan (35)-(39), (56)) for a contact whose base constants are c.
+template <class T, bool Adhesion = true>
+KOKKOS_INLINE_FUNCTION void nan2022_cohesive_constants(const Nan2022PairDerived<T>& d, T R_star,
+                                                       Nan2022ContactConstants<T>& c) {
+  if (Adhesion && c.f_ce > T(0)) {
+    // cbrt argument R*^2 > 0. A negative ratio means the linear elastic branch alone stores more
+    // than W_JKR (CY below ~1e-3 with Nan (52)); there is no room for a cohesive branch, so it is
+    // clamped to zero length (k_c -> infinity). The host report flags this case
+    // (Nan2022PairReport::cohesive_ratio_clamped).
+    c.el_over_cl = math::max(d.cohesive_coef * c.k_el / math::cbrt(R_star * R_star) - T(17) / T(56), T(0));
     c.A = (T(16) / T(27)) / (T(56) / T(162) * c.el_over_cl + T(17) / T(162));  // denominator >= 17/162
   } else {
     // Gamma = 0: k_cl ~ Gamma^(1/3) -> 0 but the cohesive branch length (4/9) f_cp/k_c ~
@@ -126,6 +178,27 @@ KOKKOS_INLINE_FUNCTION Nan2022ContactConstants<T> nan2022_contact_constants(cons
     c.el_over_cl = T(0);
     c.A = T(0);
   }
+}
+
+// nan2022_cohesive_constants as the deferred step of nan2022_normal_step (a functor: no lambda in
+// device code).
+template <class T, bool Adhesion>
+struct Nan2022FillCohesive {
+  Nan2022PairDerived<T> d;
+  T R_star;
+  KOKKOS_INLINE_FUNCTION void operator()(Nan2022ContactConstants<T>& c) const {
+    nan2022_cohesive_constants<T, Adhesion>(d, R_star, c);
+  }
+};
+
+// Every constant of the contact at equivalent radius R_star (host reports, tests, calibration;
+// the model evaluates the cohesive part only on the branches that need it).
+template <class T, bool Adhesion = true, bool Plasticity = true>
+KOKKOS_INLINE_FUNCTION Nan2022ContactConstants<T> nan2022_contact_constants(const Nan2022PairConstants<T>& p,
+                                                                            T R_star) {
+  const Nan2022PairDerived<T> d = nan2022_pair_derived(p);
+  Nan2022ContactConstants<T> c = nan2022_contact_base<T, Adhesion, Plasticity>(p, d, R_star);
+  nan2022_cohesive_constants<T, Adhesion>(d, R_star, c);
   return c;
 }
 

@@ -84,6 +84,42 @@ KOKKOS_INLINE_FUNCTION T jkr_contact_radius_ratio(T d) {
   return math::max(y * y, xc);
 }
 
+// y = sqrt(a/a_0) on the stable branch of (B3), y^4 - y - d = 0, warm-started from y_guess (the
+// contact's last y; <= 0 for none). Newton from a nearby root converges quadratically while the
+// slope 4y^3 - 1 stays away from 0 (it vanishes at the critical point y_c^3 = 1/4); each iterate
+// must keep the slope above 1/2 (well inside the stable branch), and after a correction c the
+// next error is about (f''/(2 f')) c^2 = 6 y^2 c^2 / (4y^3 - 1), so the iterate is accepted when
+// that is below 2 eps y. At most 3 iterations; anything else (no guess, d at or below d_c, a
+// guess that leaves the branch, no convergence) takes the closed form, so the result is the
+// closed form's root to within a few ulps either way. In a contact that moves little per step this
+// costs one or two divisions instead of two cube roots, three square roots and four divisions.
+template <class T>
+KOKKOS_INLINE_FUNCTION T jkr_contact_radius_root(T d, T y_guess) {
+  if (y_guess > T(0) && d > jkr_critical_overlap_ratio<T>() && d <= T(1e6)) {
+    const T tol = T(2) * constants<T>::epsilon;
+    T y = y_guess;
+    for (int it = 0; it < 3; ++it) {
+      const T y3 = y * y * y;
+      const T slope = T(4) * y3 - T(1);
+      if (!(slope > T(0.5))) break;  // off the stable branch's well-conditioned part
+      const T c = (y3 * y - y - d) / slope;
+      y -= c;
+      if (T(6) * y * c * c <= tol * slope) {
+        if (T(4) * y * y * y - T(1) > T(0.5)) return y;
+        break;
+      }
+    }
+  }
+  return math::sqrt(jkr_contact_radius_ratio(d));
+}
+
+// f/f_ce at y = sqrt(x), (B1): 16/9 y^6 - 8/3 y^3 (no square root).
+template <class T>
+KOKKOS_INLINE_FUNCTION T jkr_force_ratio_of_root(T y) {
+  const T y3 = y * y * y;
+  return T(16) / T(9) * y3 * y3 - T(8) / T(3) * y3;
+}
+
 // f/f_ce at x, (B1).
 template <class T>
 KOKKOS_INLINE_FUNCTION T jkr_force_ratio(T x) {

@@ -31,23 +31,60 @@ struct Nan2022NormalState {
   int branch = 0;        // 0 apart, 1 plastic, 2 elastic, 3 cohesive (for tests and output)
 };
 
+namespace nan2022_detail {
+// For callers whose constants are complete already (tests, host tools).
+struct CohesiveConstantsGiven {
+  template <class C>
+  KOKKOS_INLINE_FUNCTION void operator()(C&) const {}
+};
+}  // namespace nan2022_detail
+
 // One evaluation at overlap alpha. alpha_max and cs are the contact's history, updated in place.
 // Without adhesion the law has no hysteresis (alpha_jp = alpha_cp = alpha_c0 = alpha_p), so a
 // model compiled without adhesion stores no cs and passes cs = 0 on every call.
-template <class T, bool Plasticity = true>
-KOKKOS_INLINE_FUNCTION Nan2022NormalState<T> nan2022_normal_step(const Nan2022ContactConstants<T>& c, T alpha,
-                                                                 T& alpha_max, T& cs, int unloading_law,
-                                                                 int pull_off_law) {
+// fill_cohesive(c) completes c with the cohesive constants (a cube root per contact) before the
+// first branch that reads them: plastic loading and elastic unloading at positive force (a
+// contact in a compressed packing) never call it. Those two branches are tested first; they are
+// the branches the full test below would take too (alpha_cp <= alpha_p, as f_cp >= 0), with the
+// same values.
+template <class T, bool Plasticity = true, class FillCohesive = nan2022_detail::CohesiveConstantsGiven>
+KOKKOS_FORCEINLINE_FUNCTION Nan2022NormalState<T> nan2022_normal_step(Nan2022ContactConstants<T> c, T alpha,
+                                                                      T& alpha_max, T& cs, int unloading_law,
+                                                                      int pull_off_law,
+                                                                      const FillCohesive& fill_cohesive = {}) {
   Nan2022NormalState<T> s;
   if (cs == T(0) && alpha < T(0)) alpha_max = T(0);  // separated: a new contact next time
-  Nan2022Unloading<T> u = nan2022_unloading(c, alpha_max, unloading_law, pull_off_law);
+  Nan2022Unloading<T> u;
+  if (cs != T(0)) {
+    s.active = true;
+    if (Plasticity && c.yields && alpha > math::max(alpha_max, c.alpha_y)) {
+      alpha_max = alpha;  // Nan (10): alpha_max follows the overlap while the contact yields
+      s.f = c.f_y + c.k_p * (alpha - c.alpha_y);
+      s.k_n = c.k_p;
+      s.branch = 1;
+      s.yielded = true;
+      return s;
+    }
+    nan2022_unloading_line(c, alpha_max, unloading_law, u);
+    if (alpha > u.alpha_p) {
+      s.f = u.k_e * (alpha - u.alpha_p);
+      s.k_n = u.k_e;
+      s.branch = 2;
+      s.yielded = alpha_max > T(0);
+      return s;
+    }
+  } else {
+    nan2022_unloading_line(c, alpha_max, unloading_law, u);
+  }
+  fill_cohesive(c);
+  nan2022_unloading_adhesion(c, pull_off_law, u);
   if (cs == T(0)) {
     if (alpha < u.alpha_c0) return s;  // not (yet) in contact: Fig. 2(a), 2(d)
     cs = T(1);
   }
   s.active = true;
   if (Plasticity && c.yields && alpha > u.alpha_max) {
-    alpha_max = alpha;  // Nan (10): alpha_max follows the overlap while the contact yields
+    alpha_max = alpha;
     s.f = c.f_y + c.k_p * (alpha - c.alpha_y);
     s.k_n = c.k_p;
     s.branch = 1;

@@ -42,32 +42,51 @@ KOKKOS_INLINE_FUNCTION T nan2022_pull_off_force(const Nan2022ContactConstants<T>
   return T(0.5) * (-b + math::sqrt_nonneg(b * b + T(4) * q));
 }
 
-// The unloading line for a history alpha_max (0 = never yielded).
+// The elastic unloading line alone (alpha_max, k_e, alpha_p) for a history alpha_max (0 = never
+// yielded): all that the elastic branch at positive force needs (nan2022_normal_step).
 template <class T>
-KOKKOS_INLINE_FUNCTION Nan2022Unloading<T> nan2022_unloading(const Nan2022ContactConstants<T>& c, T alpha_max_history,
-                                                             int unloading_law, int pull_off_law) {
-  Nan2022Unloading<T> u;
+KOKKOS_INLINE_FUNCTION void nan2022_unloading_line(const Nan2022ContactConstants<T>& c, T alpha_max_history,
+                                                   int unloading_law, Nan2022Unloading<T>& u) {
   u.alpha_max = math::max(alpha_max_history, c.alpha_y);
   if (!c.yields || !(u.alpha_max > c.alpha_y)) {
     // Before yield the general forms reduce exactly to these; taking them directly avoids the
     // 0/0 of Nan (64) at alpha_max = alpha_y and sqrt(0/0) when alpha_y = alpha_0 = 0.
     u.k_e = c.k_el;
     u.alpha_p = c.alpha_0;
-    u.f_cp = c.f_ce;
   } else {
     const T root = math::sqrt(u.alpha_max / c.alpha_y);  // alpha_y >= f_y/k_el > 0 after yield
     u.k_e = unloading_law == static_cast<int>(Nan2022UnloadingLaw::plastic_offset)
                 ? c.k_p + (c.k_el - c.k_p) * root  // Nan (48)
                 : c.k_el * root;                   // Nan (46)
-    // Nan (16); k_e >= k_el > 0
-    u.alpha_p = (T(1) - c.k_p / u.k_e) * u.alpha_max + (c.k_p * c.alpha_y - c.f_y) / u.k_e;
-    u.f_cp = nan2022_pull_off_force(c, u.alpha_max, u.k_e, u.alpha_p, pull_off_law);
+    // Nan (16); k_e >= k_el > 0 (one division for both terms)
+    const T inv_ke = T(1) / u.k_e;
+    u.alpha_p = (T(1) - c.k_p * inv_ke) * u.alpha_max + (c.k_p * c.alpha_y - c.f_y) * inv_ke;
   }
+}
+
+// The adhesive part of the unloading line (f_cp and the critical overlaps, Nan (12)-(14)), for a
+// line from nan2022_unloading_line; c must hold the cohesive constants (nan2022_cohesive_constants).
+template <class T>
+KOKKOS_INLINE_FUNCTION void nan2022_unloading_adhesion(const Nan2022ContactConstants<T>& c, int pull_off_law,
+                                                       Nan2022Unloading<T>& u) {
+  const bool unyielded = !c.yields || !(u.alpha_max > c.alpha_y);
+  u.f_cp = unyielded ? c.f_ce : nan2022_pull_off_force(c, u.alpha_max, u.k_e, u.alpha_p, pull_off_law);
   const T fk = u.f_cp / u.k_e;
-  u.alpha_c0 = u.alpha_p - T(8) / T(9) * fk;                   // Nan (12)
+  // Nan (12); before yield alpha_0 - (8/9) f_ce/k_el is 0 exactly (Fig. 2(a): first contact at
+  // alpha = 0), whatever the rounding of alpha_0 (a per-pair ratio, nan2022_pair.hpp)
+  u.alpha_c0 = unyielded ? T(0) : u.alpha_p - T(8) / T(9) * fk;
   u.alpha_cp = u.alpha_p - fk;                                 // Nan (13)
   u.alpha_jp = u.alpha_cp - T(4) / T(9) * fk * c.el_over_cl;   // Nan (14), k_c = k_e k_cl/k_el
   u.k_c = c.el_over_cl > T(0) ? u.k_e / c.el_over_cl : u.k_e;  // see nan2022_pair.hpp
+}
+
+// The unloading line for a history alpha_max (0 = never yielded).
+template <class T>
+KOKKOS_INLINE_FUNCTION Nan2022Unloading<T> nan2022_unloading(const Nan2022ContactConstants<T>& c, T alpha_max_history,
+                                                             int unloading_law, int pull_off_law) {
+  Nan2022Unloading<T> u;
+  nan2022_unloading_line(c, alpha_max_history, unloading_law, u);
+  nan2022_unloading_adhesion(c, pull_off_law, u);
   return u;
 }
 
