@@ -15,6 +15,7 @@
 #include <epac/core/build_info.hpp>
 #include <epac/core/kokkos_compat.hpp>
 
+#include <algorithm>
 #include <climits>
 #include <cstdio>
 #include <cstdlib>
@@ -23,13 +24,24 @@
 #include <sched.h>
 #include <thread>
 #include <unistd.h>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 namespace {
 
 // The threads this process can use: the CPUs of its affinity mask, else the hardware count.
+// With OMP_PROC_BIND set, libgomp binds the initial thread to its first place when it loads
+// (before main), so the mask then holds one place only; omp_get_num_procs() keeps the count
+// libgomp found before binding. The larger of the two is the process's.
 int available_threads() {
+  int n = 0;
   cpu_set_t set;
-  if (sched_getaffinity(0, sizeof set, &set) == 0 && CPU_COUNT(&set) > 0) return CPU_COUNT(&set);
+  if (sched_getaffinity(0, sizeof set, &set) == 0) n = CPU_COUNT(&set);
+#ifdef _OPENMP
+  n = std::max(n, omp_get_num_procs());
+#endif
+  if (n > 0) return n;
   const unsigned hw = std::thread::hardware_concurrency();
   return hw > 0 ? static_cast<int>(hw) : 1;
 }
