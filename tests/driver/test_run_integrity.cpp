@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <chrono>
 #include <csignal>
+#include <cstdlib>
 #include <cstring>
 #include <fcntl.h>
 #include <filesystem>
@@ -450,6 +451,27 @@ TEST_CASE("option threads above the machine's CPUs is clamped with a warning and
       CHECK(threads >= 1);
       CHECK(threads <= cpus);
     }
+  }
+  SECTION("--threads up to the CPUs is honoured with OMP_PROC_BIND set") {
+    // libgomp binds the initial thread to its first place before main when OMP_PROC_BIND is set,
+    // so the child's own mask holds one CPU: it must still run the threads it was asked for (it
+    // ran 1 before epac-run counted CPUs with omp_get_num_procs()).
+    const int want = std::min(cpus, 2);
+    const char* old_bind = std::getenv("OMP_PROC_BIND");
+    const char* old_places = std::getenv("OMP_PLACES");
+    const std::string keep_bind = old_bind ? old_bind : "", keep_places = old_places ? old_places : "";
+    setenv("OMP_PROC_BIND", "spread", 1);
+    setenv("OMP_PLACES", "threads", 1);
+    const fs::path out = dir / "out_bound";
+    const int rc =
+        run_cli({scene.string(), "--out", out.string(), "--quiet", "--threads", std::to_string(want)}, dir / "bound");
+    old_bind ? setenv("OMP_PROC_BIND", keep_bind.c_str(), 1) : unsetenv("OMP_PROC_BIND");
+    old_places ? setenv("OMP_PLACES", keep_places.c_str(), 1) : unsetenv("OMP_PLACES");
+    const std::string err = slurp(dir / "bound" / "stderr.txt");
+    INFO(err);
+    REQUIRE(rc == 0);
+    CHECK(err.find("is more than") == std::string::npos);
+    CHECK(static_cast<int>(summary_of(out)["threads"]) == want);
   }
   SECTION("--threads 0 is refused") {
     CHECK(run_cli({scene.string(), "--out", (dir / "out0").string(), "--quiet", "--threads", "0"}, dir / "zero") != 0);
