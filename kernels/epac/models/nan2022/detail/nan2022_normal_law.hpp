@@ -32,6 +32,15 @@ struct Nan2022NormalState {
 };
 
 namespace nan2022_detail {
+// Plastic loading, Nan (18): f_p = f_y + k_p (alpha - alpha_y); alpha_max follows alpha, Nan (10).
+template <class T>
+KOKKOS_FORCEINLINE_FUNCTION void plastic_loading(const Nan2022ContactConstants<T>& c, T alpha, T& alpha_max,
+                                                 Nan2022NormalState<T>& s) {
+  alpha_max = alpha;
+  s.f = c.f_y + c.k_p * (alpha - c.alpha_y);
+  s.k_n = c.k_p;
+  s.branch = 1;
+}
 // For callers whose constants are complete already (tests, host tools).
 struct CohesiveConstantsGiven {
   template <class C>
@@ -58,10 +67,7 @@ KOKKOS_FORCEINLINE_FUNCTION Nan2022NormalState<T> nan2022_normal_step(Nan2022Con
   if (cs != T(0)) {
     s.active = true;
     if (Plasticity && c.yields && alpha > math::max(alpha_max, c.alpha_y)) {
-      alpha_max = alpha;  // Nan (10): alpha_max follows the overlap while the contact yields
-      s.f = c.f_y + c.k_p * (alpha - c.alpha_y);
-      s.k_n = c.k_p;
-      s.branch = 1;
+      nan2022_detail::plastic_loading(c, alpha, alpha_max, s);
       s.yielded = true;
       return s;
     }
@@ -84,10 +90,7 @@ KOKKOS_FORCEINLINE_FUNCTION Nan2022NormalState<T> nan2022_normal_step(Nan2022Con
   }
   s.active = true;
   if (Plasticity && c.yields && alpha > u.alpha_max) {
-    alpha_max = alpha;
-    s.f = c.f_y + c.k_p * (alpha - c.alpha_y);
-    s.k_n = c.k_p;
-    s.branch = 1;
+    nan2022_detail::plastic_loading(c, alpha, alpha_max, s);
   } else if (alpha > u.alpha_cp) {
     s.f = u.k_e * (alpha - u.alpha_p);
     s.k_n = u.k_e;

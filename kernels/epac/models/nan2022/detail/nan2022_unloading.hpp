@@ -42,13 +42,19 @@ KOKKOS_INLINE_FUNCTION T nan2022_pull_off_force(const Nan2022ContactConstants<T>
   return T(0.5) * (-b + math::sqrt_nonneg(b * b + T(4) * q));
 }
 
+// The contact has not yielded: the unloading line is the loading line (k_el, alpha_0, f_ce).
+template <class T>
+KOKKOS_FORCEINLINE_FUNCTION bool nan2022_unyielded(const Nan2022ContactConstants<T>& c, T alpha_max) {
+  return !c.yields || !(alpha_max > c.alpha_y);
+}
+
 // The elastic unloading line alone (alpha_max, k_e, alpha_p) for a history alpha_max (0 = never
 // yielded): all that the elastic branch at positive force needs (nan2022_normal_step).
 template <class T>
 KOKKOS_INLINE_FUNCTION void nan2022_unloading_line(const Nan2022ContactConstants<T>& c, T alpha_max_history,
                                                    int unloading_law, Nan2022Unloading<T>& u) {
   u.alpha_max = math::max(alpha_max_history, c.alpha_y);
-  if (!c.yields || !(u.alpha_max > c.alpha_y)) {
+  if (nan2022_unyielded(c, u.alpha_max)) {
     // Before yield the general forms reduce exactly to these; taking them directly avoids the
     // 0/0 of Nan (64) at alpha_max = alpha_y and sqrt(0/0) when alpha_y = alpha_0 = 0.
     u.k_e = c.k_el;
@@ -69,7 +75,7 @@ KOKKOS_INLINE_FUNCTION void nan2022_unloading_line(const Nan2022ContactConstants
 template <class T>
 KOKKOS_INLINE_FUNCTION void nan2022_unloading_adhesion(const Nan2022ContactConstants<T>& c, int pull_off_law,
                                                        Nan2022Unloading<T>& u) {
-  const bool unyielded = !c.yields || !(u.alpha_max > c.alpha_y);
+  const bool unyielded = nan2022_unyielded(c, u.alpha_max);
   u.f_cp = unyielded ? c.f_ce : nan2022_pull_off_force(c, u.alpha_max, u.k_e, u.alpha_p, pull_off_law);
   const T fk = u.f_cp / u.k_e;
   // Nan (12); before yield alpha_0 - (8/9) f_ce/k_el is 0 exactly (Fig. 2(a): first contact at
