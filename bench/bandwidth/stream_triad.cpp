@@ -1,6 +1,7 @@
 // STREAM-like triad a(i) = b(i) + s c(i) on the Kokkos default execution space, and the bytes per
 // contact-step of each contact kernel, so docs/performance.md can say what fraction of the machine's
-// bandwidth each law reaches (bytes per contact-step x contact-steps per second / triad GB/s).
+// bandwidth each law reaches (bytes per contact-step x contact-steps per second / triad GB/s), and
+// the peak multiply-add rate of this build (bench/roofline/roofline.py puts them together).
 //
 //   epac-stream-triad [--json FILE] [--repeats N]
 // Threads: OMP_NUM_THREADS / --kokkos-threads. Sizes: arrays of 32 KiB (L1), 256 KiB (L2),
@@ -20,6 +21,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -47,6 +49,117 @@ double triad_gbs(std::size_t n, int repeats) {
     best = std::min(best, dt);
   }
   return 3.0 * sizeof(double) * double(n) / best / 1e9;
+}
+
+// Peak arithmetic of this build, measured: each thread runs N independent multiply-add chains
+// acc = acc m + a (2 flops each) in registers. N is a template so the compiler can unroll and
+// vectorise as far as the build's flags let it (SSE2 without -march; FMA and wider vectors with
+// it); the best N over a sweep is the machine's peak for this build. Scalar code (one contact per
+// thread) reaches at most peak / lanes of the vector width the compiler used.
+template <class T, int N>
+double multiply_add_gflops(int repeats) {
+  using exec = Kokkos::DefaultExecutionSpace;
+  const int threads = exec().concurrency();
+  Kokkos::View<T*> sink("sink", threads);
+  const long iters = 1L << 22;
+  double best = 1e30;
+  for (int r = 0; r < repeats; ++r) {
+    Kokkos::fence();
+    const auto t0 = std::chrono::steady_clock::now();
+    Kokkos::parallel_for(
+        "epac::peak_multiply_add", Kokkos::RangePolicy<exec>(0, threads), KOKKOS_LAMBDA(int t) {
+          T acc[N];
+          for (int k = 0; k < N; ++k) acc[k] = T(1) + T(k) * T(1e-3) + T(t);
+          const T m = T(0.999), a = T(1e-3);  // acc -> 1: stays normal, never overflows
+          for (long it = 0; it < iters; ++it)
+            for (int k = 0; k < N; ++k) acc[k] = acc[k] * m + a;
+          T s = 0;
+          for (int k = 0; k < N; ++k) s += acc[k];
+          sink(t) = s;
+        });
+    Kokkos::fence();
+    best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  }
+  return 2.0 * N * double(iters) * threads / best / 1e9;
+}
+
+template <class T>
+double peak_gflops(int repeats) {
+  return std::max({multiply_add_gflops<T, 8>(repeats), multiply_add_gflops<T, 16>(repeats),
+                   multiply_add_gflops<T, 24>(repeats), multiply_add_gflops<T, 32>(repeats),
+                   multiply_add_gflops<T, 48>(repeats), multiply_add_gflops<T, 64>(repeats),
+                   multiply_add_gflops<T, 96>(repeats), multiply_add_gflops<T, 128>(repeats)});
+}
+
+// Core clock in GHz, measured on the calling thread: a chain of dependent integer adds retires one
+// add per cycle on every x86-64 core, so adds per second is the clock the code ran at (turbo
+// included), which the roofline needs for instructions per cycle where perf has no cycle counter.
+// 0 where not measured (other architectures).
+double clock_ghz() {
+#if defined(__x86_64__) && !defined(__CUDA_ARCH__) && !defined(__HIP_DEVICE_COMPILE__)
+  double best = 0;
+  for (int r = 0; r < 3; ++r) {
+    unsigned long x = 0;
+    const long n = 1L << 26;
+    const auto t0 = std::chrono::steady_clock::now();
+    for (long i = 0; i < n; ++i)
+      asm volatile(
+          "add $1, %0\n\tadd $1, %0\n\tadd $1, %0\n\tadd $1, %0\n\t"
+          "add $1, %0\n\tadd $1, %0\n\tadd $1, %0\n\tadd $1, %0"
+          : "+r"(x));
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (x == 8UL * n) best = std::max(best, 8.0 * double(n) / s / 1e9);
+  }
+  return best;
+#else
+  return 0;
+#endif
+}
+
+// Latency in ns of one division and of one square root on the calling thread, from dependent
+// chains (each result feeds the next): what a contact kernel's chain of them costs at the least.
+// The sqrt chain x = sqrt(x + c) includes an add, whose own chain x = x + c is timed and taken off.
+// Without -ffast-math the compiler keeps every operation (none of them may be reassociated); the
+// chains are functions of their own so that x stays in a register.
+template <class T>
+struct OpLatencies {
+  double add_ns, div_ns, sqrt_ns;
+};
+template <class T>
+[[gnu::noinline]] T add_chain(T x, T c, long n) {
+  for (long i = 0; i < n; ++i) x = x + c;
+  return x;
+}
+template <class T>
+[[gnu::noinline]] T div_chain(T x, T c, long n) {
+  for (long i = 0; i < n; ++i) x = c / x;
+  return x;
+}
+template <class T>
+[[gnu::noinline]] T sqrt_chain(T x, T c, long n) {
+  for (long i = 0; i < n; ++i) x = std::sqrt(x + c);
+  return x;
+}
+template <class T, class Chain>
+double chain_ns(Chain chain) {
+  const long n = 1L << 24;
+  volatile T seed = T(1.5);  // unknown to the compiler: no chain is folded
+  double best = 1e30;
+  for (int r = 0; r < 3; ++r) {
+    const auto t0 = std::chrono::steady_clock::now();
+    volatile T sink = chain(T(seed), T(seed), n);
+    (void)sink;
+    best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  }
+  return best / double(n) * 1e9;
+}
+template <class T>
+OpLatencies<T> op_latencies() {
+  OpLatencies<T> l;
+  l.add_ns = chain_ns<T>(add_chain<T>);
+  l.div_ns = chain_ns<T>(div_chain<T>);
+  l.sqrt_ns = chain_ns<T>(sqrt_chain<T>) - l.add_ns;
+  return l;
 }
 
 struct KernelBytes {
@@ -105,7 +218,25 @@ int main(int argc, char** argv) {
     std::printf("  %-7s %8.1f\n", labels[k], g);
     out += std::string(k ? ", " : "") + "\"" + labels[k] + "\": " + std::to_string(g);
   }
-  out += "},\n  \"bytes_per_contact_step\": {";
+  const double peak_d = peak_gflops<double>(std::max(1, repeats / 2));
+  const double peak_f = peak_gflops<float>(std::max(1, repeats / 2));
+  std::printf("peak multiply-add GFLOP/s of this build (all threads): double %.1f, float %.1f\n", peak_d, peak_f);
+  const double ghz = clock_ghz();
+  std::printf("core clock (dependent adds): %.2f GHz\n", ghz);
+  const auto ld = op_latencies<double>();
+  const auto lf = op_latencies<float>();
+  std::printf(
+      "latency ns (dependent chains, one thread): double add %.2f div %.2f sqrt %.2f; float add %.2f div %.2f "
+      "sqrt %.2f\n",
+      ld.add_ns, ld.div_ns, ld.sqrt_ns, lf.add_ns, lf.div_ns, lf.sqrt_ns);
+  out +=
+      "},\n  \"peak_GFLOPs\": {\"double\": " + std::to_string(peak_d) + ", \"float\": " + std::to_string(peak_f) + "}";
+  out += ",\n  \"clock_GHz\": " + std::to_string(ghz);
+  out += ",\n  \"latency_ns\": {\"double\": {\"add\": " + std::to_string(ld.add_ns) +
+         ", \"div\": " + std::to_string(ld.div_ns) + ", \"sqrt\": " + std::to_string(ld.sqrt_ns) +
+         "}, \"float\": {\"add\": " + std::to_string(lf.add_ns) + ", \"div\": " + std::to_string(lf.div_ns) +
+         ", \"sqrt\": " + std::to_string(lf.sqrt_ns) + "}}";
+  out += ",\n  \"bytes_per_contact_step\": {";
   std::printf("bytes per contact-step (no cache reuse; double / float):\n");
   const auto kd = kernels<double>();
   const auto kf = kernels<float>();

@@ -94,6 +94,28 @@ def ensure_epac_run():
     return exe
 
 
+def epac_build_flags(exe):
+    """Compiler and flags epac-run was built with (the build's epac-build-flags.txt)."""
+    f = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(exe))), "epac-build-flags.txt")
+    return open(f).read().strip() if os.path.exists(f) else "unknown (a build without epac-build-flags.txt)"
+
+
+def lammps_build_flags(lmp):
+    """Compiler and flags of a LAMMPS CMake build, from the CMakeCache.txt beside its lmp."""
+    f = os.path.join(os.path.dirname(os.path.realpath(lmp)), "CMakeCache.txt")
+    if not os.path.exists(f):
+        return "unknown (no CMakeCache.txt beside lmp)"
+    cache = {}
+    for line in open(f):
+        m = re.match(r"^([A-Za-z_]+):[A-Z]+=(.*)$", line.strip())
+        if m:
+            cache[m.group(1)] = m.group(2)
+    bt = cache.get("CMAKE_BUILD_TYPE", "")
+    compiler = os.path.basename(cache.get("CMAKE_CXX_COMPILER", "c++"))
+    return " ".join(x for x in (compiler, cache.get("CMAKE_CXX_FLAGS", ""), cache.get(f"CMAKE_CXX_FLAGS_{bt.upper()}", ""))
+                    if x).strip()
+
+
 def lammps_hold(lmp, pair, mode, threads, ncell, workdir, tag):
     """Runs LAMMPS; returns hold-phase loop seconds, steps and contacts (from its own log)."""
     log = os.path.join(workdir, f"log.{pair}.{threads}t.{tag}")
@@ -218,6 +240,12 @@ def main():
                     results.append(row)
                     print(json.dumps(row), flush=True)
 
+    flags = {"epac": epac_build_flags(exe), "lammps": lammps_build_flags(lmp)}
+    if args.before_epac_run:
+        flags["epac_before"] = epac_build_flags(args.before_epac_run)
+    print()
+    for k, v in flags.items():
+        print(f"{k} built with: {v}")
     print()
     print(f"Hold phase, whole step loop, ns per active contact-step (best of {args.repeats}); "
           "speedup = LAMMPS time / epac time (> 1: epac faster)")
@@ -238,7 +266,8 @@ def main():
                   f"{p['lammps_ns']:.1f} | {p['speedup']:.2f} |")
     if args.json:
         with open(args.json, "w") as f:
-            json.dump({"repeats": args.repeats, "ncell": args.ncell, "results": results}, f, indent=1)
+            json.dump({"repeats": args.repeats, "ncell": args.ncell, "build_flags": flags, "results": results}, f,
+                      indent=1)
 
 
 if __name__ == "__main__":
