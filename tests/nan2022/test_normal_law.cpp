@@ -475,3 +475,80 @@ TEMPLATE_LIST_TEST_CASE("nan2022 clamped cohesive branch (k_el/k_cl formula < 0 
   REQUIRE(kd < t.size());
   CHECK(t.f[kd - 1] == Approx(-u.f_cp).margin(u.k_e * step + force_tol<T>(u.f_cp)));
 }
+
+// Nan2022LineHistory keeps the unloading line (k_e, alpha_p) of the contact's alpha_max between
+// steps; it must give exactly what the line taken anew gives (the same expression on the same
+// inputs), always be the line of the present alpha_max when kept (so forgotten at every change of
+// it), and be known after an unloading step.
+TEMPLATE_TEST_CASE("nan2022 unloading line kept in history equals the line taken anew, bitwise",
+                   "[nan2022][law][history]", double, float) {
+  using T = TestType;
+  const auto opt = ning_options();
+  for (int law : {static_cast<int>(Nan2022UnloadingLaw::plastic_offset),
+                  static_cast<int>(Nan2022UnloadingLaw::sqrt_max_overlap)}) {
+    auto pc = nan2022_pair_constants(test::ning_particle(), test::rigid_wall(), opt);
+    pc.unloading_law = law;
+    const auto cd = nan2022_contact_constants<double>(pc, kR);
+    Nan2022PairConstants<T> pt;  // the pair's constants in T, as Nan2022::create_from_pairs rounds them
+    pt.E_star = T(pc.E_star);
+    pt.surface_energy = T(pc.surface_energy);
+    pt.yield_pressure = T(pc.yield_pressure);
+    pt.yields = pc.yields;
+    pt.kel_fixed = pc.kel_fixed;
+    pt.kel_value = T(pc.kel_value);
+    pt.kp_fixed = pc.kp_fixed;
+    pt.kp_value = T(pc.kp_value);
+    pt.unloading_law = pc.unloading_law;
+    pt.pull_off_law = pc.pull_off_law;
+    const Nan2022ContactConstants<T> c = nan2022_contact_constants<T>(pt, T(kR));
+    // random load cycles: each to a peak (below or past the last alpha_max) and back to a trough
+    // (still loaded, in the cohesive branch, past detachment, or apart), with jittered steps
+    std::mt19937 rng(7 + law);
+    std::uniform_real_distribution<double> u01(0, 1);
+    std::vector<double> path{-cd.alpha_0};
+    for (int cycle = 0; cycle < 300; ++cycle) {
+      const double peak = (0.5 + 40 * u01(rng)) * cd.alpha_y;
+      const auto line = nan2022_unloading(cd, std::max(peak, cd.alpha_y), pc.unloading_law, pc.pull_off_law);
+      const double troughs[] = {line.alpha_p + 0.5 * (peak - line.alpha_p), 0.5 * (line.alpha_cp + line.alpha_jp),
+                                line.alpha_jp - 0.1 * cd.alpha_y, -0.5 * cd.alpha_y};
+      test::ramp(path, peak, (0.05 + 0.2 * u01(rng)) * cd.alpha_y);
+      test::ramp(path, troughs[rng() % 4], (0.05 + 0.2 * u01(rng)) * cd.alpha_y);
+    }
+    T amax_a = 0, cs_a = 0, amax_b = 0, cs_b = 0, k_e = 0, alpha_p = 0;
+    int forgotten = 0, kept = 0, reused = 0, branches[4] = {0, 0, 0, 0};
+    for (std::size_t k = 0; k < path.size(); ++k) {
+      const T a = T(path[k] * (1 + 1e-3 * (u01(rng) - 0.5)));
+      const T amax_before = amax_b;
+      const T k_e_before = k_e;
+      const auto sa = nan2022_normal_step<T>(c, a, amax_a, cs_a, pc.unloading_law, pc.pull_off_law);
+      const auto sb =
+          nan2022_normal_step<T>(c, a, amax_b, cs_b, pc.unloading_law, pc.pull_off_law,
+                                 nan2022_detail::CohesiveConstantsGiven{}, Nan2022LineHistory<T>{k_e, alpha_p});
+      REQUIRE(sa.f == sb.f);
+      REQUIRE(sa.k_n == sb.k_n);
+      REQUIRE(sa.active == sb.active);
+      REQUIRE(sa.branch == sb.branch);
+      REQUIRE(amax_a == amax_b);
+      REQUIRE(cs_a == cs_b);
+      if (amax_b != amax_before) ++forgotten;
+      if (k_e > 0) {  // a kept line is always the line of the present alpha_max
+        Nan2022Unloading<T> fresh;
+        nan2022_unloading_line(c, amax_b, pc.unloading_law, fresh);
+        REQUIRE(k_e == fresh.k_e);
+        REQUIRE(alpha_p == fresh.alpha_p);
+      }
+      ++branches[sb.branch];
+      if (sb.branch == 2 || sb.branch == 3) {
+        REQUIRE(k_e > 0);  // an unloading step knows its line
+        ++kept;
+        if (k_e_before > 0) ++reused;
+      }
+    }
+    INFO("unloading law " << law << ": " << forgotten << " forgotten, " << kept << " unloading steps, " << reused
+                          << " of them from history; steps apart / plastic / elastic / cohesive " << branches[0]
+                          << " / " << branches[1] << " / " << branches[2] << " / " << branches[3]);
+    for (int b = 0; b < 4; ++b) CHECK(branches[b] > 100);  // every branch of the state machine
+    CHECK(forgotten > 100);
+    CHECK(reused > 1000);
+  }
+}

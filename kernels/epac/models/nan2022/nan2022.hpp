@@ -6,7 +6,8 @@
 //   k_t:           (4 G*/E*) k_n, Nan (22)
 //   damping:       F_d = 2 gamma beta sqrt(m* k_n) V_n, Nan (24)-(26), beta = 1 before the contact
 //                  yields and beta_yielded (default 0.1) after, Nan Sec. 2.3
-// History (only for compiled-in effects): alpha_max (plasticity), contact state (adhesion).
+// History (only for compiled-in effects): alpha_max and its unloading line k_e, alpha_p
+// (plasticity; Nan2022LineHistory), contact state (adhesion).
 // An adhesive contact stays `active` at negative overlap down to alpha_jp, so contact detection
 // must keep pairs whose gap is up to |alpha_jp| (see nan2022_pair_report: alpha_je).
 #include <epac/models/contact_geometry.hpp>
@@ -26,8 +27,10 @@ struct Nan2022 {
   using device_type = Device;
   static constexpr const char* name = "nan2022";
   static constexpr int alpha_max_field = 0;                    // if plasticity
-  static constexpr int state_field = Eff::plasticity ? 1 : 0;  // if adhesion
-  static constexpr int normal_history_size = (Eff::plasticity ? 1 : 0) + (Eff::adhesion ? 1 : 0);
+  static constexpr int line_k_e_field = 1;                     // if plasticity: Nan2022LineHistory
+  static constexpr int line_alpha_p_field = 2;                 // if plasticity
+  static constexpr int state_field = Eff::plasticity ? 3 : 0;  // if adhesion
+  static constexpr int normal_history_size = (Eff::plasticity ? 3 : 0) + (Eff::adhesion ? 1 : 0);
   static constexpr int history_size = normal_history_size + (Eff::friction ? 3 : 0);
 
   Kokkos::View<Nan2022PairConstants<T>*, Device> pairs;
@@ -42,10 +45,17 @@ struct Nan2022 {
     const Nan2022ContactConstants<T> c = nan2022_contact_base<T, Eff::adhesion, Eff::plasticity>(p, d, R);
     T alpha_max = Eff::plasticity ? row(alpha_max_field) : T(0);
     T cs = Eff::adhesion ? row(state_field) : T(0);
+    T line_k_e = Eff::plasticity ? row(line_k_e_field) : T(0);
+    T line_alpha_p = Eff::plasticity ? row(line_alpha_p_field) : T(0);
     const Nan2022FillCohesive<T, Eff::adhesion> fill_cohesive{d, R};
-    const Nan2022NormalState<T> s = nan2022_normal_step<T, Eff::plasticity>(c, g.delta, alpha_max, cs, p.unloading_law,
-                                                                            p.pull_off_law, fill_cohesive);
-    if (Eff::plasticity) row(alpha_max_field) = alpha_max;
+    const Nan2022NormalState<T> s =
+        nan2022_normal_step<T, Eff::plasticity>(c, g.delta, alpha_max, cs, p.unloading_law, p.pull_off_law,
+                                                fill_cohesive, Nan2022LineHistory<T>{line_k_e, line_alpha_p});
+    if (Eff::plasticity) {
+      row(alpha_max_field) = alpha_max;
+      row(line_k_e_field) = line_k_e;
+      row(line_alpha_p_field) = line_alpha_p;
+    }
     if (Eff::adhesion) row(state_field) = cs;
     NormalForce<T> r;
     if (!s.active) return r;

@@ -46,7 +46,41 @@ struct CohesiveConstantsGiven {
   template <class C>
   KOKKOS_INLINE_FUNCTION void operator()(C&) const {}
 };
+// For callers that keep no unloading line in history: taken anew at every call.
+struct NoLineHistory {
+  template <class T>
+  KOKKOS_INLINE_FUNCTION void line(const Nan2022ContactConstants<T>& c, T alpha_max_history, int unloading_law,
+                                   Nan2022Unloading<T>& u) const {
+    nan2022_unloading_line(c, alpha_max_history, unloading_law, u);
+  }
+  KOKKOS_INLINE_FUNCTION void forget() const {}
+};
 }  // namespace nan2022_detail
+
+// The elastic unloading line (k_e, alpha_p) of the contact's alpha_max, kept in two history fields
+// so that a contact unloading or held below alpha_max pays for its square root and divisions
+// (Nan (46)/(48), (16)) once, not at every step. k_e = 0 marks it unknown (k_e >= k_el > 0 once
+// taken); every change of alpha_max forgets it. The values are those nan2022_unloading_line gives
+// for the same inputs, so results do not change. It assumes the contact's constants (R*, the
+// pair) stay fixed while it lasts, as they do for Nan 2022 (no radius change).
+template <class T>
+struct Nan2022LineHistory {
+  T& k_e;
+  T& alpha_p;
+  KOKKOS_INLINE_FUNCTION void line(const Nan2022ContactConstants<T>& c, T alpha_max_history, int unloading_law,
+                                   Nan2022Unloading<T>& u) const {
+    if (k_e > T(0)) {
+      u.alpha_max = math::max(alpha_max_history, c.alpha_y);
+      u.k_e = k_e;
+      u.alpha_p = alpha_p;
+      return;
+    }
+    nan2022_unloading_line(c, alpha_max_history, unloading_law, u);
+    k_e = u.k_e;
+    alpha_p = u.alpha_p;
+  }
+  KOKKOS_INLINE_FUNCTION void forget() const { k_e = T(0); }
+};
 
 // One evaluation at overlap alpha. alpha_max and cs are the contact's history, updated in place.
 // Without adhesion the law has no hysteresis (alpha_jp = alpha_cp = alpha_c0 = alpha_p), so a
@@ -56,22 +90,29 @@ struct CohesiveConstantsGiven {
 // contact in a compressed packing) never call it. Those two branches are tested first; they are
 // the branches the full test below would take too (alpha_cp <= alpha_p, as f_cp >= 0), with the
 // same values.
-template <class T, bool Plasticity = true, class FillCohesive = nan2022_detail::CohesiveConstantsGiven>
+// line_history keeps the unloading line between calls (Nan2022LineHistory) or not (the default).
+template <class T, bool Plasticity = true, class FillCohesive = nan2022_detail::CohesiveConstantsGiven,
+          class LineHistory = nan2022_detail::NoLineHistory>
 KOKKOS_FORCEINLINE_FUNCTION Nan2022NormalState<T> nan2022_normal_step(Nan2022ContactConstants<T> c, T alpha,
                                                                       T& alpha_max, T& cs, int unloading_law,
                                                                       int pull_off_law,
-                                                                      const FillCohesive& fill_cohesive = {}) {
+                                                                      const FillCohesive& fill_cohesive = {},
+                                                                      const LineHistory& line_history = {}) {
   Nan2022NormalState<T> s;
-  if (cs == T(0) && alpha < T(0)) alpha_max = T(0);  // separated: a new contact next time
+  if (cs == T(0) && alpha < T(0) && alpha_max != T(0)) {  // separated: a new contact next time
+    alpha_max = T(0);
+    line_history.forget();
+  }
   Nan2022Unloading<T> u;
   if (cs != T(0)) {
     s.active = true;
     if (Plasticity && c.yields && alpha > math::max(alpha_max, c.alpha_y)) {
       nan2022_detail::plastic_loading(c, alpha, alpha_max, s);
+      line_history.forget();
       s.yielded = true;
       return s;
     }
-    nan2022_unloading_line(c, alpha_max, unloading_law, u);
+    line_history.line(c, alpha_max, unloading_law, u);
     if (alpha > u.alpha_p) {
       s.f = u.k_e * (alpha - u.alpha_p);
       s.k_n = u.k_e;
@@ -80,7 +121,7 @@ KOKKOS_FORCEINLINE_FUNCTION Nan2022NormalState<T> nan2022_normal_step(Nan2022Con
       return s;
     }
   } else {
-    nan2022_unloading_line(c, alpha_max, unloading_law, u);
+    line_history.line(c, alpha_max, unloading_law, u);
   }
   fill_cohesive(c);
   nan2022_unloading_adhesion(c, pull_off_law, u);
@@ -91,6 +132,7 @@ KOKKOS_FORCEINLINE_FUNCTION Nan2022NormalState<T> nan2022_normal_step(Nan2022Con
   s.active = true;
   if (Plasticity && c.yields && alpha > u.alpha_max) {
     nan2022_detail::plastic_loading(c, alpha, alpha_max, s);
+    line_history.forget();
   } else if (alpha > u.alpha_cp) {
     s.f = u.k_e * (alpha - u.alpha_p);
     s.k_n = u.k_e;
@@ -100,8 +142,11 @@ KOKKOS_FORCEINLINE_FUNCTION Nan2022NormalState<T> nan2022_normal_step(Nan2022Con
     s.k_n = u.k_c;
     s.branch = 3;
   } else {
-    cs = T(0);                           // detachment at alpha_jp with -5/9 f_cp; the plastic history is kept ...
-    if (alpha < T(0)) alpha_max = T(0);  // ... unless the pair has already separated
+    cs = T(0);                                // detachment at alpha_jp with -5/9 f_cp; the plastic history is kept ...
+    if (alpha < T(0) && alpha_max != T(0)) {  // ... unless the pair has already separated
+      alpha_max = T(0);
+      line_history.forget();
+    }
     s.active = false;
   }
   s.yielded = alpha_max > T(0);
