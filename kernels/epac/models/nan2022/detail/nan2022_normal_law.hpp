@@ -60,9 +60,10 @@ struct NoLineHistory {
 // The elastic unloading line (k_e, alpha_p) of the contact's alpha_max, kept in two history fields
 // so that a contact unloading or held below alpha_max pays for its square root and divisions
 // (Nan (46)/(48), (16)) once, not at every step. k_e = 0 marks it unknown (k_e >= k_el > 0 once
-// taken); every change of alpha_max forgets it. The values are those nan2022_unloading_line gives
-// for the same inputs, so results do not change. It assumes the contact's constants (R*, the
-// pair) stay fixed while it lasts, as they do for Nan 2022 (no radius change).
+// taken); every change of alpha_max forgets it (both fields 0, as in a new contact's history).
+// The values are those nan2022_unloading_line gives for the same inputs, so results do not
+// change. It assumes the contact's constants (R*, the pair) stay fixed while it lasts, as they
+// do for Nan 2022 (no radius change).
 template <class T>
 struct Nan2022LineHistory {
   T& k_e;
@@ -79,7 +80,10 @@ struct Nan2022LineHistory {
     k_e = u.k_e;
     alpha_p = u.alpha_p;
   }
-  KOKKOS_INLINE_FUNCTION void forget() const { k_e = T(0); }
+  KOKKOS_INLINE_FUNCTION void forget() const {
+    k_e = T(0);
+    alpha_p = T(0);
+  }
 };
 
 // One evaluation at overlap alpha. alpha_max and cs are the contact's history, updated in place.
@@ -121,7 +125,9 @@ KOKKOS_FORCEINLINE_FUNCTION Nan2022NormalState<T> nan2022_normal_step(Nan2022Con
       return s;
     }
   } else {
-    line_history.line(c, alpha_max, unloading_law, u);
+    // apart: the line is taken, not kept, so a separated contact's history stays all zero (a new
+    // contact); only a contact detached while still overlapping (Fig. 2(d)) needs it here
+    nan2022_unloading_line(c, alpha_max, unloading_law, u);
   }
   fill_cohesive(c);
   nan2022_unloading_adhesion(c, pull_off_law, u);
