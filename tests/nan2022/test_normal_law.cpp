@@ -490,17 +490,7 @@ TEMPLATE_TEST_CASE("nan2022 unloading line kept in history equals the line taken
     auto pc = nan2022_pair_constants(test::ning_particle(), test::rigid_wall(), opt);
     pc.unloading_law = law;
     const auto cd = nan2022_contact_constants<double>(pc, kR);
-    Nan2022PairConstants<T> pt;  // the pair's constants in T, as Nan2022::create_from_pairs rounds them
-    pt.E_star = T(pc.E_star);
-    pt.surface_energy = T(pc.surface_energy);
-    pt.yield_pressure = T(pc.yield_pressure);
-    pt.yields = pc.yields;
-    pt.kel_fixed = pc.kel_fixed;
-    pt.kel_value = T(pc.kel_value);
-    pt.kp_fixed = pc.kp_fixed;
-    pt.kp_value = T(pc.kp_value);
-    pt.unloading_law = pc.unloading_law;
-    pt.pull_off_law = pc.pull_off_law;
+    const Nan2022PairConstants<T> pt = nan2022_pair_constants_in<T>(pc);
     const Nan2022ContactConstants<T> c = nan2022_contact_constants<T>(pt, T(kR));
     // random load cycles: each to a peak (below or past the last alpha_max) and back to a trough
     // (still loaded, in the cohesive branch, past detachment, or apart), with jittered steps

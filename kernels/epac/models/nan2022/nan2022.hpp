@@ -111,22 +111,7 @@ struct Nan2022 {
         hd(k).alpha_y_slope = T(dd.alpha_y_slope);
         hd(k).kt_root = T(std::sqrt(d.kt_over_kn));
       }
-      Nan2022PairConstants<T> t;
-      t.E_star = T(d.E_star);
-      t.surface_energy = T(d.surface_energy);
-      t.yield_pressure = T(d.yield_pressure);
-      t.yields = d.yields;
-      t.kel_fixed = d.kel_fixed;
-      t.kel_value = T(d.kel_value);
-      t.kp_fixed = d.kp_fixed;
-      t.kp_value = T(d.kp_value);
-      t.unloading_law = d.unloading_law;
-      t.pull_off_law = d.pull_off_law;
-      t.kt_over_kn = T(d.kt_over_kn);
-      t.damping_ratio = T(d.damping_ratio);
-      t.beta_yielded = T(d.beta_yielded);
-      t.mu = T(d.mu);
-      h(k) = t;
+      h(k) = nan2022_pair_constants_in<T>(d);
     }
     Kokkos::deep_copy(m.pairs, h);
     Kokkos::deep_copy(m.derived, hd);

@@ -46,6 +46,27 @@ struct Nan2022PairConstants {
   T mu;               // sliding friction coefficient
 };
 
+// A pair's constants rounded to T once (Nan2022::create_from_pairs, tests).
+template <class T>
+KOKKOS_INLINE_FUNCTION Nan2022PairConstants<T> nan2022_pair_constants_in(const Nan2022PairConstants<double>& d) {
+  Nan2022PairConstants<T> t;
+  t.E_star = T(d.E_star);
+  t.surface_energy = T(d.surface_energy);
+  t.yield_pressure = T(d.yield_pressure);
+  t.yields = d.yields;
+  t.kel_fixed = d.kel_fixed;
+  t.kel_value = T(d.kel_value);
+  t.kp_fixed = d.kp_fixed;
+  t.kp_value = T(d.kp_value);
+  t.unloading_law = d.unloading_law;
+  t.pull_off_law = d.pull_off_law;
+  t.kt_over_kn = T(d.kt_over_kn);
+  t.damping_ratio = T(d.damping_ratio);
+  t.beta_yielded = T(d.beta_yielded);
+  t.mu = T(d.mu);
+  return t;
+}
+
 // The size-dependent constants of one contact.
 template <class T>
 struct Nan2022ContactConstants {
