@@ -12,8 +12,11 @@ SCENE = os.path.join(ROOT, "bench", "peers", "fcc_compress.toml")
 LATTICE_A = 2.0 * 2 ** 0.5 * 1e-3  # cubic cell edge: nearest-neighbour distance 2R, R = 1 mm
 
 
-def fcc_scene(law_block=None, ncell=14, steps=None, deform_steps=None, output_interval=None):
-    """Scene text: law_block replaces the marked block; ncell resizes lattice and box."""
+def fcc_scene(law_block=None, ncell=14, steps=None, deform_steps=None, output_interval=None, order=None,
+              spatial_sort=None):
+    """Scene text: law_block replaces the marked block; ncell resizes lattice and box.
+    order: [particles] order ("shuffled": the mixed scene); spatial_sort: [run] spatial_sort
+    (True, False or "auto"; None keeps the driver's default)."""
     text = open(SCENE).read()
     if law_block is not None:
         text, n = re.subn(r"(# --- law ---[^\n]*\n).*?(# --- end law ---\n)",
@@ -32,6 +35,14 @@ def fcc_scene(law_block=None, ncell=14, steps=None, deform_steps=None, output_in
         text = set_key(text, "box.deform", "steps", deform_steps)
     if output_interval is not None:
         text = set_key(text, "run", "output_interval", output_interval)
+    if order is not None:
+        text, n = re.subn(r"^\[particles\.lattice\]", f'[particles]\norder = "{order}"\n\n[particles.lattice]', text,
+                          flags=re.M)
+        if n != 1:
+            raise SystemExit(f"{SCENE}: expected one [particles.lattice] table")
+    if spatial_sort is not None:
+        value = {True: "true", False: "false"}.get(spatial_sort, f'"{spatial_sort}"')
+        text = text.replace("[run]\n", f"[run]\nspatial_sort = {value}\n", 1)
     return text
 
 

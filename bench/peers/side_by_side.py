@@ -137,10 +137,10 @@ def lammps_hold(lmp, pair, mode, threads, ncell, workdir, tag):
             "ns_per_contact_step": 1e9 * loop / (contacts * steps)}
 
 
-def epac_hold(exe, law, threads, precision, ncell, workdir, tag, deform_steps=500):
-    scene = os.path.join(workdir, f"fcc_{law}.toml")
+def epac_hold(exe, law, threads, precision, ncell, workdir, tag, deform_steps=500, order=None, spatial_sort=None):
+    scene = os.path.join(workdir, f"fcc_{law}_{order}_{spatial_sort}.toml")
     with open(scene, "w") as f:
-        f.write(fcc_scene(LAWS[law]["epac"], ncell))
+        f.write(fcc_scene(LAWS[law]["epac"], ncell, order=order, spatial_sort=spatial_sort))
     out = os.path.join(workdir, f"epac.{law}.{precision}.{threads}t.{tag}")
     env = dict(os.environ, OMP_NUM_THREADS=str(threads), OMP_PROC_BIND=os.environ.get("OMP_PROC_BIND", "false"))
     subprocess.check_call([exe, scene, "--threads", str(threads), "--precision", precision, "--quiet",
@@ -183,6 +183,12 @@ def main():
     ap.add_argument("--laws", nargs="+", default=list(LAWS), choices=list(LAWS))
     ap.add_argument("--precision", nargs="+", default=["double"], choices=["double", "float"])
     ap.add_argument("--ncell", type=int, default=14)
+    ap.add_argument("--scene", default="fcc", choices=["fcc", "mixed"],
+                    help="mixed: epac's particles in a random order ([particles] order = \"shuffled\"), the order a "
+                         "long mixing flow ends in; epac's default spatial sort is timed against the same build with "
+                         "spatial_sort = false (the 'before' column). LAMMPS runs its own input, which it sorts "
+                         "spatially at the setup of every run (verlet.cpp), so its input order does not matter. "
+                         "Use --ncell 30 (108,000 spheres, about 650,000 contacts)")
     ap.add_argument("--json", default=None, help="write the measurements here")
     ap.add_argument("--lmp", default=os.environ.get("LMP", LMP_DEFAULT))
     ap.add_argument("--legacy-epac-run", default=None,
@@ -195,6 +201,9 @@ def main():
 
     lmp = ensure_lammps(args.lmp)
     exe = ensure_epac_run()
+    order = "shuffled" if args.scene == "mixed" else None
+    if args.scene == "mixed" and (args.before_epac_run or args.legacy_epac_run):
+        ap.error("--scene mixed times its own 'before' (spatial_sort = false): no --before/--legacy-epac-run")
     results = []
     with tempfile.TemporaryDirectory(prefix="epac-peers-") as work:
         for law in args.laws:
@@ -207,10 +216,16 @@ def main():
                         if key not in best or m["loop_s"] < best[key]["loop_s"]:
                             best[key] = dict(m, title=title, mode=mode)
                     for prec in args.precision:
-                        m = epac_hold(exe, law, t, prec, args.ncell, work, f"r{r}")
+                        m = epac_hold(exe, law, t, prec, args.ncell, work, f"r{r}", order=order)
                         key = ("epac", prec)
                         if key not in best or m["loop_s"] < best[key]["loop_s"]:
                             best[key] = m
+                        if order:
+                            m = epac_hold(exe, law, t, prec, args.ncell, work, f"unsorted.r{r}", order=order,
+                                          spatial_sort=False)
+                            key = ("before", prec)
+                            if key not in best or m["loop_s"] < best[key]["loop_s"]:
+                                best[key] = m
                     if args.before_epac_run:
                         for prec in args.precision:
                             m = epac_hold(args.before_epac_run, law, t, prec, args.ncell, work, f"before.r{r}")
@@ -249,8 +264,11 @@ def main():
     print()
     print(f"Hold phase, whole step loop, ns per active contact-step (best of {args.repeats}); "
           "speedup = LAMMPS time / epac time (> 1: epac faster)")
+    if order:
+        print(f"Scene: mixed (fcc ncell {args.ncell}, epac's particles shuffled); epac before = spatial_sort = false, "
+              "epac = the default (auto)")
     print()
-    legacy = args.legacy_epac_run is not None or args.before_epac_run is not None
+    legacy = args.legacy_epac_run is not None or args.before_epac_run is not None or order is not None
     print("| law | threads |" + (" epac before |" if legacy else "") + " epac |" + (" after / before |" if legacy else "")
           + " LAMMPS style | LAMMPS | speedup |")
     print("|---|---|" + ("---|---|" if legacy else "") + "---|---|---|---|")
@@ -266,8 +284,8 @@ def main():
                   f"{p['lammps_ns']:.1f} | {p['speedup']:.2f} |")
     if args.json:
         with open(args.json, "w") as f:
-            json.dump({"repeats": args.repeats, "ncell": args.ncell, "build_flags": flags, "results": results}, f,
-                      indent=1)
+            json.dump({"repeats": args.repeats, "ncell": args.ncell, "scene": args.scene, "build_flags": flags,
+                       "results": results}, f, indent=1)
 
 
 if __name__ == "__main__":

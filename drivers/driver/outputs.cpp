@@ -165,6 +165,7 @@ void write_summary_json(const std::string& path, const RunSummary& s) {
   j["contacts_mean"] = s.contacts_mean;
   j["contact_list_mean"] = s.contact_list_mean;
   j["rebuilds"] = s.rebuilds;
+  j["spatial_sorts"] = s.sorts;
   j["wall_time_s"] = s.wall_time_s;
   j["setup_time_s"] = s.setup_time_s;
   j["contact_steps_per_second"] = s.contact_steps_per_second;

@@ -197,5 +197,15 @@ void fill_lattice(const LatticeSpec& l, std::vector<ParticleSpec>& ps) {
         }
 }
 
+void shuffle_order(std::uint64_t seed, std::vector<ParticleSpec>& ps) {
+  std::mt19937_64 rng(seed);
+  for (std::size_t k = ps.size(); k > 1; --k) {
+    const double u = static_cast<double>(rng() >> 11) * (1.0 / 9007199254740992.0);  // [0, 1)
+    std::size_t j = static_cast<std::size_t>(u * static_cast<double>(k));
+    if (j >= k) j = k - 1;
+    std::swap(ps[k - 1], ps[j]);
+  }
+}
+
 }  // namespace driver
 }  // namespace epac

@@ -27,5 +27,9 @@ void fill_lattice(const LatticeSpec& lattice, std::vector<ParticleSpec>& particl
 // cannot hold them (the random-sequential-addition jamming limit is about 0.38 solid fraction).
 void fill_box(const FillSpec& fill, std::vector<ParticleSpec>& particles);
 
+// Puts the particles in a random order (Fisher-Yates on a seeded mt19937_64 with the bounded
+// draws made from 53-bit uniforms: the same order for a given seed on every platform).
+void shuffle_order(std::uint64_t seed, std::vector<ParticleSpec>& particles);
+
 }  // namespace driver
 }  // namespace epac

@@ -49,6 +49,7 @@ struct RunSummary {
   std::string scene, model, effects, scalar, backend;
   int threads = 0;
   std::int64_t particles = 0, walls = 0, steps = 0, rebuilds = 0;
+  std::int64_t sorts = 0;  // spatial sorts ([run] spatial_sort), the one at setup included
   double dt = 0, simulated_time = 0;
   double wall_time_s = 0;                      // the stepping loop only
   double setup_time_s = 0;                     // device state, first detection and forces

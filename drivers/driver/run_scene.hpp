@@ -151,12 +151,12 @@ class SceneRun {
 
   // The first contact lists, the initial history, and the force pass's accumulators.
   void build_contacts() {
-    if (scene_.run.spatial_sort) on_sort_ = [this](const Kokkos::View<int*, Device>& perm) { sort_particles(perm); };
-    det_.detect(p_, walls_, &on_sort_);
+    on_sort_ = [this](const Kokkos::View<int*, Device>& perm) { sort_particles(perm); };
+    det_.detect(p_, walls_, sort_at(0));
     det_.remap(p_);
     // [run] initial_history: contacts overlapping at step 0 start from a quasi-static load
     if (start_history(scene_, model_, p_, walls_, det_, sum_, info_)) {
-      det_.detect(p_, walls_, &on_sort_);  // the load grew radii past the skin rule
+      det_.detect(p_, walls_, sort_at(0));  // the load grew radii past the skin rule
       det_.remap(p_);
     }
     wall_driver_->mark_build();
@@ -170,7 +170,22 @@ class SceneRun {
     sums_ = ForceSums<T, Device>(p_);
   }
 
-  // [run] spatial_sort: every per-particle array follows the cell order at each rebuild.
+  // [run] spatial_sort: whether the detection at `step` reorders the particles (the callback) or
+  // not (null). auto: a scene of at least kAutoSortMinParticles particles is sorted at its first
+  // build and then at the first rebuild sort_interval steps after the last sort.
+  const typename ContactDetector<T, Device>::sort_callback* sort_at(std::int64_t step) {
+    using Sort = RunSpec::Sort;
+    const Sort mode = scene_.run.spatial_sort;
+    bool now = mode == Sort::always;
+    if (mode == Sort::automatic && p_.n >= kAutoSortMinParticles)
+      now = last_sort_step_ < 0 || step - last_sort_step_ >= scene_.run.sort_interval;
+    if (!now) return nullptr;
+    last_sort_step_ = step;
+    ++sorts_;
+    return &on_sort_;
+  }
+
+  // Every per-particle array follows the cell order (a sorting detection).
   void sort_particles(const Kokkos::View<int*, Device>& perm) {
     const Permuter<T, Device> permute(perm);
     permute.particles(p_);
@@ -316,7 +331,7 @@ class SceneRun {
       const T shift = advance(step);
       if (det_.needs_rebuild(shift, T(wall_driver_->max_shift_since_build()))) {
         if (diverged(step)) break;  // before the cell list meets a non-finite coordinate
-        rebuild_contacts();
+        rebuild_contacts(step);
       }
       // SIGINT/SIGTERM: this step is the last; it writes its sample like the final step.
       const int signal = stop_signal();
@@ -352,9 +367,9 @@ class SceneRun {
   }
 
   // The skin is used up: new lists, their history, the deterministic incidences.
-  void rebuild_contacts() {
+  void rebuild_contacts(std::int64_t step) {
     box_.wrap(p_);  // then detect() records the wrapped positions as the reference: a wrap is no motion
-    det_.detect(p_, walls_, &on_sort_);
+    det_.detect(p_, walls_, sort_at(step));
     wall_driver_->mark_build();
     phases_.lap(Phase::detection);
     det_.remap(p_);
@@ -414,6 +429,7 @@ class SceneRun {
           stats_.window_samples > 0 ? stats_.window_active_sum / stats_.window_samples : 0.0;
     }
     sum_.rebuilds = det_.builds - stats_.builds0;
+    sum_.sorts = sorts_;
     sum_.simulated_time = done * scene_.run.dt;
     sum_.contacts_mean = stats_.samples > 0 ? stats_.active_sum / stats_.samples : 0.0;
     sum_.contact_list_mean =
@@ -432,9 +448,9 @@ class SceneRun {
     for (const auto& kv : sum_.model_counters) std::printf("%s = %.10g\n", kv.first.c_str(), kv.second);
     std::printf(
         "%lld steps in %.3f s (setup %.3f s): %.3g contact-steps/s (list entries), %.1f contacts (mean, "
-        "active), %lld rebuilds\n",
+        "active), %lld rebuilds, %lld spatial sorts\n",
         static_cast<long long>(stats_.done), sum_.wall_time_s, sum_.setup_time_s, sum_.contact_steps_per_second,
-        sum_.contacts_mean, static_cast<long long>(sum_.rebuilds));
+        sum_.contacts_mean, static_cast<long long>(sum_.rebuilds), static_cast<long long>(sum_.sorts));
     if (phases_.enabled()) {
       std::printf("phases [s]:");
       for (const auto& kv : sum_.phases) std::printf(" %s %.3f", kv.first.c_str(), kv.second);
@@ -464,6 +480,8 @@ class SceneRun {
   // contacts and forces (build_contacts)
   ContactDetector<T, Device> det_;
   typename ContactDetector<T, Device>::sort_callback on_sort_;
+  std::int64_t last_sort_step_ = -1;  // [run] spatial_sort = "auto"
+  std::int64_t sorts_ = 0;            // detections that reordered the particles (setup included)
   bool deterministic_ = false;
   DeterministicPass<T, Device> det_pass_;
   ForceSums<T, Device> sums_;

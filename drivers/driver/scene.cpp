@@ -388,6 +388,11 @@ void parse_particles(TableReader& top, Scene& s) {
   if (!pt) throw SceneError("particles is missing (required: [[particles.list]] entries and/or [particles.fill])");
   TableReader r(*pt, "particles");
   s.allow_overlap = r.boolean("allow_overlap", false);
+  const std::string order = r.string("order").value_or("as_built");
+  if (order != "as_built" && order != "shuffled")
+    throw SceneError("particles.order = \"" + order + "\" is not a particle order (valid: \"as_built\", \"shuffled\")");
+  s.shuffle = order == "shuffled";
+  s.order_seed = static_cast<std::uint64_t>(r.integer("order_seed", 0, std::numeric_limits<std::int64_t>::max(), 1));
   if (const toml::array* list = r.array("list")) {
     for (std::size_t k = 0; k < list->size(); ++k) {
       const std::string path = "particles.list[" + std::to_string(k) + "]";
@@ -542,7 +547,17 @@ void parse_run(TableReader& top, Scene& s) {
   s.run.skin = r.number("skin", 0.0, Bound::closed, kInf, Bound::open, -1.0);
   s.run.contact_output = r.boolean("contact_output", false);
   s.run.particle_output = r.boolean("particle_output", false);
-  s.run.spatial_sort = r.boolean("spatial_sort", false);
+  if (const toml::node* n = r.get("spatial_sort")) {
+    if (auto b = n->as_boolean()) {
+      s.run.spatial_sort = b->get() ? RunSpec::Sort::always : RunSpec::Sort::never;
+    } else if (auto str = n->as_string(); str && str->get() == "auto") {
+      s.run.spatial_sort = RunSpec::Sort::automatic;
+    } else {
+      throw SceneError(std::string("run.spatial_sort must be \"auto\", true (every rebuild) or false (never), got ") +
+                       (n->as_string() ? "\"" + n->as_string()->get() + "\"" : type_name(*n)) + line_of(*n));
+    }
+  }
+  s.run.sort_interval = r.integer("sort_interval", 1, 1000000000000LL, std::int64_t(1000));
   s.run.deterministic = r.boolean("deterministic", false);
   s.run.snapshot_format = r.string("snapshot_format").value_or("none");
   if (s.run.snapshot_format != "none" && s.run.snapshot_format != "vtp")
@@ -631,6 +646,7 @@ void finish_scene(Scene& s) {
   fill_box(s.fill, s.particles);
   fill_lattice(s.lattice, s.particles);
   if (periodic) wrap_into_box(s.box, s.particles);
+  if (s.shuffle) shuffle_order(s.order_seed, s.particles);
   // Periodic: one check over everything, images across the faces included. A lattice next to
   // other particles: the lattice itself does not avoid them.
   if (!s.allow_overlap && (periodic || s.lattice.enabled)) check_no_overlap(s.particles, periodic ? &s.box : nullptr);

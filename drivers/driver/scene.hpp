@@ -124,11 +124,17 @@ struct ModelSpec {
 struct RunSpec {
   double dt = 0;
   std::int64_t steps = 0;
-  std::int64_t output_interval = 0;      // 0: steps / 100 (at least 1)
-  double skin = -1;                      // < 0: 0.2 x the smallest radius (see finish_scene)
-  bool contact_output = false;           // contacts.csv at every output step
-  bool particle_output = false;          // particles.csv at every output step
-  bool spatial_sort = false;             // reorder the particle arrays in cell order at every rebuild
+  std::int64_t output_interval = 0;  // 0: steps / 100 (at least 1)
+  double skin = -1;                  // < 0: 0.2 x the smallest radius (see finish_scene)
+  bool contact_output = false;       // contacts.csv at every output step
+  bool particle_output = false;      // particles.csv at every output step
+  // [run] spatial_sort: when the particle arrays are reordered into cell order (at a rebuild).
+  // auto: at the first build and then at the first rebuild `sort_interval` steps after the last
+  // sort, when the scene has at least kAutoSortMinParticles particles (drivers/README.md: the
+  // measurement behind the rule); always: at every rebuild; never.
+  enum class Sort { never, always, automatic };
+  Sort spatial_sort = Sort::automatic;
+  std::int64_t sort_interval = 1000;     // steps between sorts in auto mode (LAMMPS atom_modify sort's default)
   bool deterministic = false;            // the kernels' deterministic mode: same bits on any thread count
   std::string snapshot_format = "none";  // "vtp": ParaView/OVITO snapshots at every output step
   // "from_overlaps": contacts overlapping at step 0 get the history of a quasi-static load to
@@ -147,6 +153,10 @@ struct Scene {
   LatticeSpec lattice;
   BoxSpec box;
   bool allow_overlap = false;
+  // [particles] order = "shuffled": the particles (list, fill, lattice) in a seeded random order,
+  // the memory order a long mixing flow ends in (benchmarks of the spatial sort).
+  bool shuffle = false;
+  std::uint64_t order_seed = 1;
   std::vector<WallSpec> walls;
   Vec3d gravity{0, 0, 0};
   RunSpec run;

@@ -14,6 +14,10 @@
 namespace epac {
 namespace driver {
 
+// [run] spatial_sort = "auto" sorts scenes of at least this many particles (drivers/README.md,
+// "Spatial sort": below it a shuffled order cost under 5% and the particle arrays fit in one core's L2).
+inline constexpr int kAutoSortMinParticles = 4096;
+
 template <class T, class Device>
 class Permuter {
  public:

@@ -13,11 +13,14 @@
 #include "driver/contact_detection.hpp"
 #include "driver/model_registry.hpp"
 #include "driver/scene.hpp"
+#include "driver/spatial_sort.hpp"
 #include "driver_test_util.hpp"
 
+#include <cstdio>
 #include <cmath>
 #include <random>
 #include <set>
+#include <tuple>
 #include <string>
 #include <utility>
 #include <vector>
@@ -639,5 +642,175 @@ spatial_sort = )" +
     check_same_particles(d1, d2, 1e-6);
     std::filesystem::remove_all(d1);
     std::filesystem::remove_all(d2);
+  }
+}
+
+// [run] spatial_sort = "auto" (the default): which detections reorder the particles. A lattice
+// in uniform motion through a periodic box has no contacts and rebuilds at fixed steps: v dt =
+// skin / 9, so the shift passes skin / 2 after every 5th step and the rebuilds are at 5, 10, ...
+TEST_CASE("spatial sort: the auto rule sorts large scenes at setup and every sort_interval steps", "[driver][sort]") {
+  auto scene = [](int cz, const std::string& sort) {
+    const double a = 2.8284271247461903e-3;
+    char box[256];
+    std::snprintf(box, sizeof box,
+                  "[box]\nlo = [0.0, 0.0, 0.0]\nhi = [%.17g, %.17g, %.17g]\nperiodic = [true, true, true]\n", 10 * a,
+                  10 * a, cz * a);
+    return kBead + box + R"(
+[particles.lattice]
+a = 2.8284271247461903e-3
+cells = [10, 10, )" +
+           std::to_string(cz) +
+           R"(]
+radius_min = 0.9e-3
+material = "bead"
+velocity = [1.0, 0.0, 0.0]
+
+[run]
+dt = 1.0e-6
+steps = 60
+skin = 9.0e-6
+output_interval = 60
+)" + sort + "\n";
+  };
+  auto run = [](const std::string& text) {
+    const auto dir = test::fresh_out_dir("sort_rule");
+    const auto sum = run_text(text, dir);
+    std::filesystem::remove_all(dir);
+    return sum;
+  };
+  // 4400 particles (>= kAutoSortMinParticles): setup, then the first rebuild 20 steps after the last sort
+  auto s = run(scene(11, "sort_interval = 20"));
+  CHECK(s.particles == 4400);
+  CHECK(s.particles >= driver::kAutoSortMinParticles);
+  CHECK(s.rebuilds == 12);
+  CHECK(s.sorts == 4);  // steps 0, 20, 40, 60
+  s = run(scene(11, "sort_interval = 25"));
+  CHECK(s.sorts == 3);  // steps 0, 25 (the rebuild at 25), 50
+  s = run(scene(11, ""));
+  CHECK(s.sorts == 1);  // the default interval (1000 steps): setup only
+  s = run(scene(11, "spatial_sort = true"));
+  CHECK(s.sorts == s.rebuilds + 1);  // every detection
+  s = run(scene(11, "spatial_sort = false"));
+  CHECK(s.sorts == 0);
+  // 4000 particles (< kAutoSortMinParticles): auto never sorts; true still does
+  s = run(scene(10, "sort_interval = 1"));
+  CHECK(s.particles < driver::kAutoSortMinParticles);
+  CHECK(s.rebuilds == 12);
+  CHECK(s.sorts == 0);
+  s = run(scene(10, "spatial_sort = true"));
+  CHECK(s.sorts == 13);
+}
+
+// A shuffled scene ([particles] order = "shuffled") compressed in a periodic box: the auto sort
+// (at setup and at rebuilds) changes the memory order only, so every particle ends where the
+// unsorted run puts it (round-off apart: the per-particle sums run in another order).
+TEST_CASE("spatial sort: a shuffled scene sorted by the auto rule runs as unsorted", "[driver][sort]") {
+  auto scene = [](const std::string& sort) {
+    return kBead + R"(
+[box]
+lo = [0.0, 0.0, 0.0]
+hi = [0.028284271247461903, 0.028284271247461903, 0.031112698372208092]
+periodic = [true, true, true]
+
+[box.deform]
+scale = [0.9, 0.9, 0.9]
+steps = 200
+
+[particles]
+order = "shuffled"
+
+[particles.lattice]
+a = 2.8284271247461903e-3
+cells = [10, 10, 11]
+radius_min = 0.94e-3
+radius_max = 0.99e-3
+jitter = 5.0e-6
+material = "bead"
+seed = 4711
+
+[run]
+dt = 2.0e-6
+steps = 200
+output_interval = 100
+skin = 2.0e-4
+particle_output = true
+sort_interval = 50
+)" + sort + "\n";
+  };
+  const auto d1 = test::fresh_out_dir("shuffled_auto");
+  const auto d2 = test::fresh_out_dir("shuffled_unsorted");
+  const auto s1 = run_text(scene(""), d1);
+  const auto s2 = run_text(scene("spatial_sort = false"), d2);
+  CHECK(s1.sorts >= 2);  // setup and at least one rebuild
+  CHECK(s2.sorts == 0);
+  CHECK(s1.rebuilds == s2.rebuilds);
+  CHECK(s1.contacts_mean > 1000.0);  // compressed into contact
+  CHECK(s1.contacts_mean == Approx(s2.contacts_mean).margin(1.0));
+  check_same_particles(d1, d2, 1e-6);
+  std::filesystem::remove_all(d1);
+  std::filesystem::remove_all(d2);
+}
+
+TEST_CASE("[particles] order = \"shuffled\": a seeded permutation of the scene's particles", "[driver][scene][sort]") {
+  auto scene = [](const std::string& particles, const std::string& run) {
+    return kBead + R"(
+[particles]
+)" + particles +
+           R"(
+[particles.lattice]
+a = 0.003
+cells = [4, 3, 3]
+radius_min = 0.0009
+radius_max = 0.001
+material = "bead"
+seed = 3
+
+[run]
+dt = 1e-6
+steps = 1
+)" + run;
+  };
+  const Scene built = parse_scene_string(scene("", ""));
+  const Scene a = parse_scene_string(scene("order = \"shuffled\"\norder_seed = 5\n", ""));
+  const Scene again = parse_scene_string(scene("order = \"shuffled\"\norder_seed = 5\n", ""));
+  const Scene other = parse_scene_string(scene("order = \"shuffled\"\norder_seed = 6\n", ""));
+  REQUIRE(a.particles.size() == built.particles.size());
+  auto key = [](const ParticleSpec& p) {
+    return std::make_tuple(p.position[0], p.position[1], p.position[2], p.radius);
+  };
+  std::multiset<std::tuple<double, double, double, double>> ka, kb;
+  std::size_t moved = 0, same_again = 0, same_other = 0;
+  for (std::size_t i = 0; i < a.particles.size(); ++i) {
+    ka.insert(key(a.particles[i]));
+    kb.insert(key(built.particles[i]));
+    moved += key(a.particles[i]) != key(built.particles[i]);
+    same_again += key(a.particles[i]) == key(again.particles[i]);
+    same_other += key(a.particles[i]) == key(other.particles[i]);
+  }
+  CHECK(ka == kb);                                            // the same particles,
+  CHECK(moved > a.particles.size() * 9 / 10);                 // in another order,
+  CHECK(same_again == a.particles.size());                    // the same for a seed,
+  CHECK(same_other < a.particles.size() / 10);                // another for another seed
+  CHECK(built.run.spatial_sort == RunSpec::Sort::automatic);  // the default
+  CHECK(built.run.sort_interval == 1000);
+  CHECK(parse_scene_string(scene("", "spatial_sort = true\n")).run.spatial_sort == RunSpec::Sort::always);
+  CHECK(parse_scene_string(scene("", "spatial_sort = false\n")).run.spatial_sort == RunSpec::Sort::never);
+  CHECK(parse_scene_string(scene("", "spatial_sort = \"auto\"\nsort_interval = 7\n")).run.sort_interval == 7);
+  const std::vector<std::pair<std::string, std::string>> bad = {
+      {scene("order = \"random\"\n", ""), "particles.order = \"random\""},
+      {scene("order_seed = -1\n", ""), "particles.order_seed"},
+      {scene("", "spatial_sort = \"sometimes\"\n"), "run.spatial_sort must be \"auto\", true"},
+      {scene("", "spatial_sort = 1\n"), "run.spatial_sort must be"},
+      {scene("", "sort_interval = 0\n"), "run.sort_interval = 0"},
+  };
+  for (const auto& [text, expect] : bad) {
+    INFO(text);
+    try {
+      parse_scene_string(text);
+      FAIL("accepted: expected an error containing '" << expect << "'");
+    } catch (const SceneError& e) {
+      INFO(e.what());
+      CHECK(std::string(e.what()).find(expect) != std::string::npos);
+    }
   }
 }
