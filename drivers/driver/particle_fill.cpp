@@ -11,6 +11,10 @@ namespace epac {
 namespace driver {
 namespace {
 
+// A uniform draw in [0, 1) from 53 random bits: the same on every platform (std's distributions
+// are not). Every seeded stream of the scene (fill, lattice, order) draws through it.
+double unit_draw(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * (1.0 / 9007199254740992.0); }
+
 // Hashed uniform grid of cell size h >= 2 R_max: overlapping spheres lie in neighbouring cells.
 // Distinct cells may share a hash bucket; that only adds candidates, never loses one.
 class HostGrid {
@@ -126,10 +130,7 @@ void fill_box(const FillSpec& f, std::vector<ParticleSpec>& ps) {
   }
 
   std::mt19937_64 rng(f.seed);
-  auto uniform = [&rng](double lo, double hi) {  // 53 random bits: the same on every platform
-    const double u = static_cast<double>(rng() >> 11) * (1.0 / 9007199254740992.0);
-    return lo + (hi - lo) * u;
-  };
+  auto uniform = [&rng](double lo, double hi) { return lo + (hi - lo) * unit_draw(rng); };
   HostGrid grid(2.0 * max_radius(ps, f.radius_max));
   for (int i = 0; i < static_cast<int>(ps.size()); ++i) grid.insert(ps[i].position, i);
 
@@ -172,10 +173,7 @@ void fill_lattice(const LatticeSpec& l, std::vector<ParticleSpec>& ps) {
   if (!l.enabled) return;
   static const double basis[4][3] = {{0, 0, 0}, {0.5, 0.5, 0}, {0.5, 0, 0.5}, {0, 0.5, 0.5}};
   std::mt19937_64 rng(l.seed);
-  auto uniform = [&rng](double lo, double hi) {  // 53 random bits: the same on every platform
-    const double u = static_cast<double>(rng() >> 11) * (1.0 / 9007199254740992.0);
-    return lo + (hi - lo) * u;
-  };
+  auto uniform = [&rng](double lo, double hi) { return lo + (hi - lo) * unit_draw(rng); };
   std::int64_t k = 0;
   ps.reserve(ps.size() + static_cast<std::size_t>(l.count()));
   for (std::int64_t cz = 0; cz < l.cells[2]; ++cz)
@@ -200,8 +198,7 @@ void fill_lattice(const LatticeSpec& l, std::vector<ParticleSpec>& ps) {
 void shuffle_order(std::uint64_t seed, std::vector<ParticleSpec>& ps) {
   std::mt19937_64 rng(seed);
   for (std::size_t k = ps.size(); k > 1; --k) {
-    const double u = static_cast<double>(rng() >> 11) * (1.0 / 9007199254740992.0);  // [0, 1)
-    std::size_t j = static_cast<std::size_t>(u * static_cast<double>(k));
+    std::size_t j = static_cast<std::size_t>(unit_draw(rng) * static_cast<double>(k));
     if (j >= k) j = k - 1;
     std::swap(ps[k - 1], ps[j]);
   }
