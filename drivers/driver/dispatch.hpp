@@ -1,7 +1,8 @@
 #pragma once
 // Runtime-to-compile-time dispatch: (scene effects bits, precision) -> run_scene<Factory, T, Bits>.
 // Only the effect sets that are subsets of a model's Supported mask and contain its Required
-// bits are instantiated (hertz_mindlin: 4 sets x 2 scalar types).
+// bits are instantiated, and rolling resistance only with friction (the scene check refuses it
+// alone): hertz_mindlin 6 sets x 2 scalar types.
 #include "driver/run_scene.hpp"
 
 #include <stdexcept>
@@ -15,7 +16,8 @@ RunSummary dispatch_effects(const Scene& s, const RunOptions& o) {
   if constexpr (Bits > kAllEffects) {
     throw std::logic_error("effects {" + effect_names(s.model.effects) + "} have no compiled instance of model " +
                            s.model.name + " (supported: " + effect_names(Supported) + ")");
-  } else if constexpr ((Bits & ~Supported) != 0u || (Bits & Required) != Required) {
+  } else if constexpr ((Bits & ~Supported) != 0u || (Bits & Required) != Required ||
+                       ((Bits & kRolling) != 0u && (Bits & kFriction) == 0u)) {
     return dispatch_effects<Factory, Supported, Required, T, Bits + 1>(s, o);
   } else {
     if (s.model.effects == Bits) return run_scene<Factory, T, Bits>(s, o);

@@ -10,11 +10,8 @@ struct Named {
   const char* name;
   unsigned bit;
 };
-constexpr Named kNames[] = {{"adhesion", kAdhesion},
-                            {"plasticity", kPlasticity},
-                            {"friction", kFriction},
-                            {"damping", kDamping},
-                            {"radius_growth", kRadiusGrowth}};
+constexpr Named kNames[] = {{"adhesion", kAdhesion}, {"plasticity", kPlasticity},      {"friction", kFriction},
+                            {"damping", kDamping},   {"radius_growth", kRadiusGrowth}, {"rolling", kRolling}};
 }  // namespace
 
 std::string effect_names(unsigned bits) {
@@ -40,6 +37,7 @@ unsigned derive_effects(const std::vector<Material>& mats, const std::vector<int
     if (std::isfinite(p.yield_stress)) bits |= kPlasticity;
     if (p.friction > 0) bits |= kFriction;
     if (p.restitution < 1) bits |= kDamping;
+    if (p.rolling_friction > 0) bits |= kRolling;
   };
   for (int a : particle_mats) {
     for (int b : particle_mats) add_pair(mats[a], mats[b]);

@@ -14,13 +14,15 @@ namespace driver {
 // "friction, damping" ("none" for the empty set).
 std::string effect_names(unsigned bits);
 
-// Bit of one effect name ("adhesion", "plasticity", "friction", "damping", "radius_growth");
+// Bit of one effect name ("adhesion", "plasticity", "friction", "damping", "radius_growth",
+// "rolling");
 // 0 if unknown.
 unsigned effect_bit(const std::string& name);
 
 // The minimal set for the pairs that can meet: every particle material with every particle
 // material and every wall material. surface energy > 0 -> adhesion; finite yield stress ->
-// plasticity; friction > 0 -> friction; restitution < 1 -> damping. Radius growth is a model's
+// plasticity; friction > 0 -> friction; restitution < 1 -> damping; rolling_friction > 0 ->
+// rolling (the pair's geometric mean, so both materials must set it). Radius growth is a model's
 // choice (MDR), never derived from materials.
 unsigned derive_effects(const std::vector<Material>& materials, const std::vector<int>& particle_materials,
                         const std::vector<int>& wall_materials);

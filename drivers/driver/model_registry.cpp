@@ -8,16 +8,16 @@ namespace driver {
 const std::vector<ModelEntry>& model_registry() {
   constexpr double inf = std::numeric_limits<double>::infinity();
   static const std::vector<ModelEntry> entries = {
-      {"hertz_mindlin", kFriction | kDamping, 0u, {}, &run_hertz_mindlin},
+      {"hertz_mindlin", kFriction | kDamping | kRolling, 0u, {}, &run_hertz_mindlin},
       {"linear_spring",
-       kFriction | kDamping,
+       kFriction | kDamping | kRolling,
        0u,
        {{"stiffness", 0.0, Bound::open, inf, Bound::open, false, 0.0}},  // k_n [N/m]
        &run_linear_spring},
       // MDR (Zunker & Kamrin Part I), driver/models/mdr.cpp. Radius growth is on whenever
       // plasticity is (unless [model] effects says otherwise).
       {"mdr",
-       kAdhesion | kPlasticity | kFriction | kDamping | kRadiusGrowth,
+       kAdhesion | kPlasticity | kFriction | kDamping | kRadiusGrowth | kRolling,
        0u,
        {{"xi", 1.0, Bound::closed, 3.0, Bound::closed, true, 1.0},  // MDR (15): 1 or 3 (checked)
         choice_key("growth_rule", {"plastic_loading", "yielded_contacts"}, 0),
@@ -38,7 +38,7 @@ const std::vector<ModelEntry>& model_registry() {
        &mdr_scene_check},
       // Nan et al. 2022 linear elasto-plastic adhesive model, driver/models/nan2022.cpp.
       {"nan2022",
-       kAdhesion | kPlasticity | kFriction | kDamping,
+       kAdhesion | kPlasticity | kFriction | kDamping | kRolling,
        0u,
        {choice_key("yield_pressure_from", {"jackson_green", "chang", "given_pressure"}, 0),
         {"strain_rate_Y", -inf, Bound::open, inf, Bound::open, true, 0.0},  // Nan (34), off when 0
@@ -59,7 +59,7 @@ const std::vector<ModelEntry>& model_registry() {
        0u,
        &nan2022_scene_check},
       // Hertz-JKR (Nan Appendix B), driver/models/jkr.cpp.
-      {"jkr", kAdhesion | kFriction | kDamping, 0u, {}, &run_jkr, 0u, &jkr_scene_check},
+      {"jkr", kAdhesion | kFriction | kDamping | kRolling, 0u, {}, &run_jkr, 0u, &jkr_scene_check},
   };
   return entries;
 }

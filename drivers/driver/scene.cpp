@@ -264,6 +264,9 @@ void parse_materials(TableReader& top, Scene& s) {
     read("friction", m.friction, false);
     read("surface_energy", m.surface_energy, false);
     read("yield_stress", m.yield_stress, false);
+    read("rolling_stiffness", m.rolling_stiffness, false);
+    read("rolling_damping", m.rolling_damping, false);
+    read("rolling_friction", m.rolling_friction, false);
     r.finish();
     // Material::validate owns the ranges; its messages say "material 'NAME': key", which we
     // rewrite to the scene's dotted key.
@@ -667,6 +670,14 @@ void finish_scene(Scene& s) {
       s.model.notes.push_back("the materials call for " + effect_names(ignored) + ", which model " + entry.name +
                               " does not implement: ignored");
   }
+
+  // Rolling resistance is compiled with sliding friction only (LAMMPS's granular styles always
+  // have a tangential model too).
+  if ((s.model.effects & kRolling) && !(s.model.effects & kFriction))
+    throw SceneError(
+        "effects: rolling without friction: the materials set rolling_friction > 0 (or [model] effects "
+        "names \"rolling\") but no contact has sliding friction; give the materials friction > 0 (or "
+        "add \"friction\" to [model] effects)");
 
   // The model's own check (options against materials and effects) and its adhesive range: the
   // largest separation at which a contact stays active. The skin must exceed it, or an adhesive

@@ -203,6 +203,25 @@ steps = 1
   const Scene lin = parse_scene_string(scene("", "name = \"linear_spring\"\nstiffness = 2500.0"));
   CHECK(lin.model.name == "linear_spring");
   CHECK(lin.model.params.at("stiffness") == 2500.0);
+  // rolling resistance: from rolling_friction > 0, with friction; alone it is refused by name
+  const Scene roll = parse_scene_string(
+      scene("friction = 0.5\nrolling_friction = 0.1\nrolling_stiffness = 40.0\nrolling_damping = 1e-4", ""));
+  CHECK(roll.model.effects == unsigned(kFriction | kRolling));
+  CHECK(roll.materials[0].rolling_friction == 0.1);
+  CHECK(roll.materials[0].rolling_stiffness == 40.0);
+  CHECK(roll.materials[0].rolling_damping == 1e-4);
+  CHECK(effect_names(kRolling) == "rolling");
+  CHECK(effect_bit("rolling") == unsigned(kRolling));
+  try {
+    parse_scene_string(scene("rolling_friction = 0.1", ""));
+    FAIL("rolling without friction accepted");
+  } catch (const SceneError& e) { CHECK(std::string(e.what()).find("rolling without friction") != std::string::npos); }
+  try {
+    parse_scene_string(scene("friction = 0.5\nrolling_damping = -1", ""));
+    FAIL("negative rolling_damping accepted");
+  } catch (const SceneError& e) {
+    CHECK(std::string(e.what()).find("materials.a.rolling_damping") != std::string::npos);
+  }
   CHECK(effect_names(kFriction | kDamping) == "friction, damping");
   CHECK(bytes_per_contact(3, 8) == 3 * 8 + 8 + 8);
   CHECK(bytes_per_contact(0, 4) == 8);

@@ -15,7 +15,7 @@ struct HertzMindlinFactory : ModelFactoryBase<HertzMindlin<T, Effects<Bits>, Dev
 };
 
 RunSummary run_hertz_mindlin(const Scene& s, const RunOptions& o) {
-  return dispatch_run<HertzMindlinFactory, kFriction | kDamping>(s, o);
+  return dispatch_run<HertzMindlinFactory, kFriction | kDamping | kRolling>(s, o);
 }
 
 }  // namespace driver

@@ -22,7 +22,7 @@ struct JkrFactory : ModelFactoryBase<Jkr<T, Effects<Bits>, Device>> {
 }  // namespace
 
 RunSummary run_jkr(const Scene& s, const RunOptions& o) {
-  return dispatch_run<JkrFactory, kAdhesion | kFriction | kDamping>(s, o);
+  return dispatch_run<JkrFactory, kAdhesion | kFriction | kDamping | kRolling>(s, o);
 }
 
 // Adhesive range: the contact breaks at the critical overlap delta_c = -(3/4) (pi^2 Gamma^2 R* /

@@ -16,7 +16,7 @@ struct LinearSpringFactory : ModelFactoryBase<LinearSpring<T, Effects<Bits>, Dev
 };
 
 RunSummary run_linear_spring(const Scene& s, const RunOptions& o) {
-  return dispatch_run<LinearSpringFactory, kFriction | kDamping>(s, o);
+  return dispatch_run<LinearSpringFactory, kFriction | kDamping | kRolling>(s, o);
 }
 
 }  // namespace driver

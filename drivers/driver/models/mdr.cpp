@@ -121,12 +121,14 @@ struct MdrFactory : ModelFactoryBase<Mdr<T, Effects<Bits>, Device>> {
 };
 
 // dispatch_run without the sets that have radius growth but no plasticity (growth comes from
-// plastic deformation; the scene check refuses them): 24 effect sets x 2 scalar types.
+// plastic deformation; the scene check refuses them) and with rolling but no friction: 36 effect
+// sets x 2 scalar types.
 template <class T, unsigned Bits = 0>
 RunSummary dispatch_mdr(const Scene& s, const RunOptions& o) {
   if constexpr (Bits > kAllEffects) {
     throw std::logic_error("effects {" + effect_names(s.model.effects) + "} have no compiled instance of model mdr");
-  } else if constexpr ((Bits & kRadiusGrowth) != 0u && (Bits & kPlasticity) == 0u) {
+  } else if constexpr (((Bits & kRadiusGrowth) != 0u && (Bits & kPlasticity) == 0u) ||
+                       ((Bits & kRolling) != 0u && (Bits & kFriction) == 0u)) {
     return dispatch_mdr<T, Bits + 1>(s, o);
   } else {
     if (s.model.effects == Bits) return run_scene<MdrFactory, T, Bits>(s, o);

@@ -69,7 +69,7 @@ double nan2022_pair_range(const Nan2022PairConstants<double>& p, double R_star, 
 }  // namespace
 
 RunSummary run_nan2022(const Scene& s, const RunOptions& o) {
-  return dispatch_run<Nan2022Factory, kAdhesion | kPlasticity | kFriction | kDamping>(s, o);
+  return dispatch_run<Nan2022Factory, kAdhesion | kPlasticity | kFriction | kDamping | kRolling>(s, o);
 }
 
 // Validates the options against every pair that can meet (nan2022_pair_constants throws naming

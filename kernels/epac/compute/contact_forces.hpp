@@ -11,6 +11,7 @@
 #include <epac/models/contact_conventions.hpp>
 #include <epac/models/contact_geometry.hpp>
 #include <epac/models/model_interface.hpp>
+#include <epac/models/rolling_resistance.hpp>
 #include <epac/models/tangential_spring.hpp>
 #include <epac/state/contact_history.hpp>
 #include <epac/state/contact_list.hpp>
@@ -133,6 +134,7 @@ KOKKOS_FORCEINLINE_FUNCTION void finish_contact(const Model& model, const Conv& 
                                                 const ContactForceBuffer<T, Device>& buf, int k, const FAccess& fa,
                                                 const TAccess& ta, bool reversed = false) {
   using Eff = typename Model::effects;
+  constexpr bool rolling = detail::rolling_on<Model>::value;
   // contact-point velocity of i relative to j: v_i - v_j + w_i x r_i - w_j x r_j
   Vec3<T> w_arm = arm_i * load3(p.omega, g.i);
   if (IsPair) w_arm += arm_j * load3(p.omega, g.j);
@@ -141,8 +143,10 @@ KOKKOS_FORCEINLINE_FUNCTION void finish_contact(const Model& model, const Conv& 
   g.delta_dot = -vn;
   const NormalForce<T> nf = model.normal(g, row);
   const auto trow = row.shifted(Model::normal_history_size);
+  const auto rrow = trow.shifted(Eff::friction ? 3 : 0);  // rolling resistance's fields
   if (!nf.active) {
     if (Eff::friction) reset_tangential(trow);
+    if constexpr (rolling) reset_rolling(rrow);
     if (out.normal_force.extent(0) > 0) out.normal_force(k) = T(0);
     if (out.overlap.extent(0) > 0) out.overlap(k) = g.delta;
     if (buf.enabled()) {
@@ -186,17 +190,35 @@ KOKKOS_FORCEINLINE_FUNCTION void finish_contact(const Model& model, const Conv& 
     F += ft;
     nxft = cross(g.n, ft);
   }
+  // Rolling resistance: torque R* n x F_r on i and its opposite on j (models/rolling_resistance.hpp),
+  // bounded by the same normal force as the Coulomb bound above.
+  Vec3<T> t_roll;
+  if constexpr (rolling) {
+    Vec3<T> rel_rot = load3(p.omega, g.i);
+    if (IsPair) rel_rot -= load3(p.omega, g.j);
+    const Vec3<T> v_rl = g.R_eff * cross(rel_rot, g.n);
+    const T f_c = conv.coulomb_on_damped ? fn : nf.f;
+    const Vec3<T> fr = rolling_sds_force(model.rolling.pairs(g.pair), g.n, v_rl, f_c, g.dt, rrow);
+    t_roll = g.R_eff * cross(g.n, fr);
+  }
   if (buf.enabled()) {
     // negation is exact: the listed first particle gets the bits of -F when it is g.j
-    const Vec3<T> t_i = Eff::friction ? (-arm_i) * nxft : Vec3<T>();
-    const Vec3<T> t_j = Eff::friction ? (-arm_j) * nxft : Vec3<T>();
+    Vec3<T> t_i = Eff::friction ? (-arm_i) * nxft : Vec3<T>();
+    Vec3<T> t_j = Eff::friction ? (-arm_j) * nxft : Vec3<T>();
+    if constexpr (rolling) {
+      t_i += t_roll;
+      t_j -= t_roll;
+    }
     store3(buf.force, k, reversed ? T(-1) * F : F);
     store3(buf.torque_i, k, reversed ? t_j : t_i);
     store3(buf.torque_j, k, reversed ? t_i : t_j);
   } else {
     scatter_add3(fa, g.i, F);
     if (IsPair) scatter_add3(fa, g.j, T(-1) * F);
-    if (Eff::friction) {
+    if constexpr (rolling) {
+      scatter_add3(ta, g.i, (-arm_i) * nxft + t_roll);
+      if (IsPair) scatter_add3(ta, g.j, (-arm_j) * nxft - t_roll);
+    } else if (Eff::friction) {
       scatter_add3(ta, g.i, (-arm_i) * nxft);
       if (IsPair) scatter_add3(ta, g.j, (-arm_j) * nxft);
     }
@@ -253,6 +275,7 @@ void compute_pair_forces(const Model& model, const Particles<T, Device>& p, cons
                          const ContactHistory<T, Device>& h, T dt, const ForceSums<T, Device, Policy>& sums,
                          const ContactOutputs<T, Device>& out = {}, const ContactForceBuffer<T, Device>& buf = {}) {
   static_assert(check_contact_model<Model, T, Device>(), "epac: Model is not a contact model (see above)");
+  if constexpr (detail::rolling_on<Model>::value) model.rolling.require_bound(model.nmat);
   // Canonical orientation: each pair is evaluated as (smaller global id, larger), so the
   // arithmetic does not depend on how the list names it (with FMA contraction even a sum such as
   // arm_i w_i + arm_j w_j rounds differently when swapped). Always for side-ordered laws and
@@ -275,6 +298,7 @@ void compute_wall_forces(const Model& model, const Particles<T, Device>& p, cons
                          const ForceSums<T, Device, Policy>& sums, const ContactOutputs<T, Device>& out = {},
                          const ContactForceBuffer<T, Device>& buf = {}) {
   static_assert(check_contact_model<Model, T, Device>(), "epac: Model is not a contact model (see above)");
+  if constexpr (detail::rolling_on<Model>::value) model.rolling.require_bound(model.nmat);
   using exec = typename Device::execution_space;
   const int nmat = model.nmat;
   const auto conv = contact_conventions<Model>::of(model);

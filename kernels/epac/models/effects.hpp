@@ -9,7 +9,8 @@ enum EffectBits : unsigned {
   kFriction = 1u << 2,
   kDamping = 1u << 3,
   kRadiusGrowth = 1u << 4,
-  kAllEffects = (1u << 5) - 1u,
+  kRolling = 1u << 5,  // rolling resistance (models/rolling_resistance.hpp), every law
+  kAllEffects = (1u << 6) - 1u,
 };
 
 template <unsigned Bits>
@@ -20,6 +21,7 @@ struct Effects {
   static constexpr bool friction = (Bits & kFriction) != 0;
   static constexpr bool damping = (Bits & kDamping) != 0;
   static constexpr bool radius_growth = (Bits & kRadiusGrowth) != 0;
+  static constexpr bool rolling = (Bits & kRolling) != 0;
 };
 
 using AllEffects = Effects<kAllEffects>;

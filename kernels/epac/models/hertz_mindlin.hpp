@@ -8,6 +8,7 @@
 // clamped at zero (no viscous pull near separation).
 #include <epac/models/contact_geometry.hpp>
 #include <epac/models/effects.hpp>
+#include <epac/models/rolling_resistance.hpp>
 #include <epac/params/material.hpp>
 #include <epac/params/restitution_damping.hpp>
 #include <epac/state/contact_history.hpp>
@@ -29,10 +30,12 @@ struct HertzMindlin {
   using device_type = Device;
   static constexpr const char* name = "hertz_mindlin";
   static constexpr int normal_history_size = 0;
-  static constexpr int history_size = normal_history_size + (Eff::friction ? 3 : 0);
+  // the tangential spring's 3 fields, then rolling resistance's 3 (compute/contact_forces.hpp)
+  static constexpr int history_size = normal_history_size + (Eff::friction ? 3 : 0) + (Eff::rolling ? 3 : 0);
 
   Kokkos::View<HertzMindlinPair<T>*, Device> pairs;
   int nmat = 0;
+  RollingTable<T, Device, Eff::rolling> rolling;  // per material pair; empty unless Eff::rolling
 
   KOKKOS_INLINE_FUNCTION NormalForce<T> normal(const ContactGeometry<T>& g, const HistoryRow<T, Device>&) const {
     NormalForce<T> r;
@@ -78,6 +81,7 @@ struct HertzMindlin {
                              T(pp.friction), T(std::sqrt(4.0 * pp.G_star / pp.E_star))};
       }
     Kokkos::deep_copy(m.pairs, h);
+    m.rolling = RollingTable<T, Device, Eff::rolling>::create(materials);
     return m;
   }
 };

@@ -3,6 +3,7 @@
 // damping c = 2 gamma with gamma from e0 by Nan (26), so a collision rebounds with exactly e0.
 #include <epac/models/contact_geometry.hpp>
 #include <epac/models/effects.hpp>
+#include <epac/models/rolling_resistance.hpp>
 #include <epac/params/material.hpp>
 #include <epac/params/restitution_damping.hpp>
 #include <epac/state/contact_history.hpp>
@@ -24,10 +25,12 @@ struct LinearSpring {
   using device_type = Device;
   static constexpr const char* name = "linear_spring";
   static constexpr int normal_history_size = 0;
-  static constexpr int history_size = normal_history_size + (Eff::friction ? 3 : 0);
+  // the tangential spring's 3 fields, then rolling resistance's 3 (compute/contact_forces.hpp)
+  static constexpr int history_size = normal_history_size + (Eff::friction ? 3 : 0) + (Eff::rolling ? 3 : 0);
 
   Kokkos::View<LinearSpringPair<T>*, Device> pairs;
   int nmat = 0;
+  RollingTable<T, Device, Eff::rolling> rolling;  // per material pair; empty unless Eff::rolling
 
   KOKKOS_INLINE_FUNCTION NormalForce<T> normal(const ContactGeometry<T>& g, const HistoryRow<T, Device>&) const {
     NormalForce<T> r;
@@ -67,6 +70,7 @@ struct LinearSpring {
                              T(pp.friction), T(std::sqrt(4.0 * pp.G_star / pp.E_star))};
       }
     Kokkos::deep_copy(m.pairs, h);
+    m.rolling = RollingTable<T, Device, Eff::rolling>::create(materials);
     return m;
   }
 };

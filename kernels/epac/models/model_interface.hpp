@@ -5,8 +5,10 @@
 // is the smallest law that has them all):
 //   using effects = Effects<...>;                    compile-time effect set (models/effects.hpp)
 //   static constexpr int normal_history_size;        the law's own history fields, >= 0
-//   static constexpr int history_size;               normal_history_size + 3 with friction (the
-//                                                    tangential spring's fields follow the law's)
+//   static constexpr int history_size;               normal_history_size + 3 with friction + 3 with
+//                                                    rolling (the tangential spring's fields follow
+//                                                    the law's, then rolling resistance's)
+//   with effects::rolling: RollingTable<T, Device, true> rolling;   (models/rolling_resistance.hpp)
 //   int nmat;                                        materials: the pair table is nmat x nmat
 //   KOKKOS_INLINE_FUNCTION NormalForce<T> normal(const ContactGeometry<T>&,
 //                                                const HistoryRow<T, Device>&) const;
@@ -49,6 +51,14 @@ struct has_effect_flags<M, std::void_t<std::integral_constant<bool, M::effects::
                                        std::integral_constant<bool, M::effects::damping>,
                                        std::integral_constant<bool, M::effects::radius_growth>>> : std::true_type {};
 
+// Rolling resistance is on when the effects say `rolling = true` (an effects type without the
+// member, written before the effect existed, has it off).
+template <class M, class = void>
+struct rolling_on : std::false_type {};
+template <class M>
+struct rolling_on<M, std::void_t<std::integral_constant<bool, M::effects::rolling>>>
+    : std::integral_constant<bool, M::effects::rolling> {};
+
 template <class M, class = void>
 struct has_normal_history_size : std::false_type {};
 template <class M>
@@ -67,7 +77,8 @@ template <class M>
 struct history_sizes_fit<
     M, std::enable_if_t<has_normal_history_size<M>::value && has_history_size<M>::value && has_effect_flags<M>::value>>
     : std::integral_constant<bool, (M::normal_history_size >= 0 &&
-                                    M::history_size >= M::normal_history_size + (M::effects::friction ? 3 : 0))> {};
+                                    M::history_size >= M::normal_history_size + (M::effects::friction ? 3 : 0) +
+                                                           (rolling_on<M>::value ? 3 : 0))> {};
 
 template <class M, class = void>
 struct has_nmat : std::false_type {};
@@ -133,6 +144,12 @@ template <class M>
 struct has_deterministic_hooks<M, std::void_t<decltype(std::declval<M&>().begin_deterministic_pass(0, 0))>>
     : std::true_type {};
 
+// With rolling on: a member `rolling` with the per-pair view `pairs` (models/rolling_resistance.hpp).
+template <class M, class = void>
+struct has_rolling_table : std::false_type {};
+template <class M>
+struct has_rolling_table<M, std::void_t<decltype(std::declval<const M&>().rolling.pairs)>> : std::true_type {};
+
 }  // namespace detail
 
 // True when Model has every required member for particles of scalar T on Device.
@@ -142,6 +159,7 @@ struct is_contact_model
           bool, detail::has_effects<Model>::value && detail::has_effect_flags<Model>::value &&
                     detail::has_normal_history_size<Model>::value && detail::has_history_size<Model>::value &&
                     detail::history_sizes_fit<Model>::value && detail::has_nmat<Model>::value &&
+                    (!detail::rolling_on<Model>::value || detail::has_rolling_table<Model>::value) &&
                     detail::scalar_type_matches<Model, T>::value && detail::has_normal<Model, T, Device>::value> {};
 
 // The kernels' compile-time check: one message per missing or ill-formed member.
@@ -160,8 +178,12 @@ constexpr bool check_contact_model() {
                 "epac: a contact model must define `static constexpr int history_size = normal_history_size + "
                 "(effects::friction ? 3 : 0);` (see models/hertz_mindlin.hpp)");
   static_assert(detail::history_sizes_fit<Model>::value,
-                "epac: the contact model's history_size must be at least normal_history_size + 3 with friction (the "
-                "tangential spring's 3 fields follow the law's), and normal_history_size >= 0");
+                "epac: the contact model's history_size must be at least normal_history_size + 3 with friction + 3 "
+                "with rolling (the tangential spring's 3 fields follow the law's, then rolling's), and "
+                "normal_history_size >= 0");
+  static_assert(!detail::rolling_on<Model>::value || detail::has_rolling_table<Model>::value,
+                "epac: a contact model with effects::rolling must have a member `RollingTable<T, Device, true> "
+                "rolling` (models/rolling_resistance.hpp; see models/hertz_mindlin.hpp)");
   static_assert(detail::has_nmat<Model>::value,
                 "epac: a contact model must have a member `int nmat` (the number of materials; the kernels index "
                 "its pair table by mat_i * nmat + mat_j; see models/hertz_mindlin.hpp)");

@@ -17,7 +17,12 @@ struct Material {
   double friction = 0;            // sliding friction coefficient mu >= 0; 0 = no friction
   double surface_energy = 0;      // Gamma (Nan) = Delta gamma (MDR) [J/m^2]; 0 = no adhesion
   double yield_stress = std::numeric_limits<double>::infinity();  // Y or sigma_y [Pa]; inf = no yield
-  bool rigid = false;                                             // rigid body (walls): contributes no compliance
+  // Rolling resistance (models/rolling_resistance.hpp; LAMMPS `rolling sds k_r gamma_r mu_r`):
+  // rolling_friction mu_r > 0 turns it on.
+  double rolling_stiffness = 0;  // k_r [N/m] >= 0
+  double rolling_damping = 0;    // gamma_r [N s/m] >= 0
+  double rolling_friction = 0;   // mu_r >= 0; 0 = no rolling resistance
+  bool rigid = false;            // rigid body (walls): contributes no compliance
   // Rigid only: its own restitution, friction and surface energy for its contacts (default: a
   // rigid wall takes the particle's). E.g. a die wall with less friction than the powder.
   bool own_surface_properties = false;
@@ -35,6 +40,10 @@ struct Material {
     require_range(p + "surface_energy", surface_energy, 0.0, Bound::closed, std::numeric_limits<double>::infinity(),
                   Bound::open);
     require_positive(p + "yield_stress", yield_stress, /*allow_inf=*/true);
+    const double inf = std::numeric_limits<double>::infinity();
+    require_range(p + "rolling_stiffness", rolling_stiffness, 0.0, Bound::closed, inf, Bound::open);
+    require_range(p + "rolling_damping", rolling_damping, 0.0, Bound::closed, inf, Bound::open);
+    require_range(p + "rolling_friction", rolling_friction, 0.0, Bound::closed, inf, Bound::open);
   }
 };
 
@@ -44,6 +53,7 @@ struct PairProperties {
   double G_star = 0;  // 1/G* = (2-nu1)/G1 + (2-nu2)/G2
   double restitution = 1, friction = 0, surface_energy = 0;
   double yield_stress = std::numeric_limits<double>::infinity();  // the softer body's
+  double rolling_stiffness = 0, rolling_damping = 0, rolling_friction = 0;
 };
 
 inline PairProperties pair_properties(const Material& a, const Material& b) {
@@ -69,6 +79,15 @@ inline PairProperties pair_properties(const Material& a, const Material& b) {
   p.surface_energy = (a.rigid || b.rigid) ? pick(a.surface_energy, b.surface_energy, false)
                                           : std::sqrt(a.surface_energy * b.surface_energy);
   p.yield_stress = pick(a.yield_stress, b.yield_stress, true);
+  // Rolling: the geometric mean for two particles (LAMMPS's mix_geom), so that either at 0 turns
+  // the pair's rolling resistance off.
+  auto geom = [&](double va, double vb) {
+    if (a.rigid || b.rigid) return pick(va, vb, false);
+    return std::sqrt(va * vb);
+  };
+  p.rolling_stiffness = geom(a.rolling_stiffness, b.rolling_stiffness);
+  p.rolling_damping = geom(a.rolling_damping, b.rolling_damping);
+  p.rolling_friction = geom(a.rolling_friction, b.rolling_friction);
   return p;
 }
 

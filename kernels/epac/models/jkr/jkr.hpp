@@ -14,6 +14,7 @@
 // Without adhesion (compiled out or Gamma = 0 for the pair) the law is Hertz.
 #include <epac/models/contact_geometry.hpp>
 #include <epac/models/effects.hpp>
+#include <epac/models/rolling_resistance.hpp>
 #include <epac/models/jkr/detail/jkr_contact_radius.hpp>
 #include <epac/params/material.hpp>
 #include <epac/params/restitution_damping.hpp>
@@ -37,10 +38,12 @@ struct Jkr {
   using device_type = Device;
   static constexpr const char* name = "jkr";
   static constexpr int normal_history_size = Eff::adhesion ? 1 : 0;  // contact state and radius root
-  static constexpr int history_size = normal_history_size + (Eff::friction ? 3 : 0);
+  // the tangential spring's 3 fields, then rolling resistance's 3 (compute/contact_forces.hpp)
+  static constexpr int history_size = normal_history_size + (Eff::friction ? 3 : 0) + (Eff::rolling ? 3 : 0);
 
   Kokkos::View<JkrPair<T>*, Device> pairs;
   int nmat = 0;
+  RollingTable<T, Device, Eff::rolling> rolling;  // per material pair; empty unless Eff::rolling
 
   KOKKOS_INLINE_FUNCTION NormalForce<T> normal(const ContactGeometry<T>& g, const HistoryRow<T, Device>& row) const {
     NormalForce<T> r;
@@ -113,6 +116,7 @@ struct Jkr {
                              T(std::sqrt(4.0 * pp.G_star / pp.E_star))};
       }
     Kokkos::deep_copy(m.pairs, h);
+    m.rolling = RollingTable<T, Device, Eff::rolling>::create(materials);
     return m;
   }
 };

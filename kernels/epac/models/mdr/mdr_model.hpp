@@ -44,6 +44,7 @@
 #include <epac/models/contact_conventions.hpp>
 #include <epac/models/contact_geometry.hpp>
 #include <epac/models/effects.hpp>
+#include <epac/models/rolling_resistance.hpp>
 #include <epac/models/mdr/detail/mdr_detachment.hpp>
 #include <epac/models/mdr/detail/mdr_evaluation.hpp>
 #include <epac/models/mdr/detail/mdr_pair_balance.hpp>
@@ -76,7 +77,9 @@ struct MdrContactOutput {
   bool active = false;
 };
 
-template <class T, class Eff = AllEffects, class Device = DefaultDevice>
+// Default effects: everything MDR itself models; rolling resistance (kRolling) is opt-in, as for
+// every law.
+template <class T, class Eff = Effects<kAllEffects & ~kRolling>, class Device = DefaultDevice>
 struct Mdr {
   using scalar_type = T;
   using effects = Eff;
@@ -93,11 +96,13 @@ struct Mdr {
   static constexpr int side_fields = SideField::count;
   static constexpr int pair_fields = PairField::count;
   static constexpr int normal_history_size = pair_fields + 2 * side_fields;
-  static constexpr int history_size = normal_history_size + (Eff::friction ? 3 : 0);
+  // the tangential spring's 3 fields, then rolling resistance's 3 (compute/contact_forces.hpp)
+  static constexpr int history_size = normal_history_size + (Eff::friction ? 3 : 0) + (Eff::rolling ? 3 : 0);
 
   Kokkos::View<MdrSideConstants<T>*, Device> sides;  // per material
   Kokkos::View<MdrPairConstants<T>*, Device> pairs;  // per material pair, mat_i * nmat + mat_j
   int nmat = 0;
+  RollingTable<T, Device, Eff::rolling> rolling;  // per material pair; empty unless Eff::rolling
   T xi = T(1);
   bool geometric_split = false;   // MdrOptions::pair_split == geometric (the authors' flat)
   bool equal_pair_split = false;  // MdrOptions::pair_split == equal_pair (detail/mdr_pair_equal.hpp)
@@ -301,6 +306,7 @@ struct Mdr {
     m.growth.radius_cap = T(opt.radius_cap);
     m.growth.denominator_floor = T(opt.denominator_floor);
     m.growth.volume_floor = T(opt.volume_floor);
+    m.rolling = RollingTable<T, Device, Eff::rolling>::create(materials);
     return m;
   }
 

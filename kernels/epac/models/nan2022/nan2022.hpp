@@ -12,6 +12,7 @@
 // must keep pairs whose gap is up to |alpha_jp| (see nan2022_pair_report: alpha_je).
 #include <epac/models/contact_geometry.hpp>
 #include <epac/models/effects.hpp>
+#include <epac/models/rolling_resistance.hpp>
 #include <epac/models/nan2022/detail/nan2022_normal_law.hpp>
 #include <epac/params/nan2022/nan2022_parameters.hpp>
 #include <epac/state/contact_history.hpp>
@@ -31,11 +32,13 @@ struct Nan2022 {
   static constexpr int line_alpha_p_field = 2;                 // if plasticity
   static constexpr int state_field = Eff::plasticity ? 3 : 0;  // if adhesion
   static constexpr int normal_history_size = (Eff::plasticity ? 3 : 0) + (Eff::adhesion ? 1 : 0);
-  static constexpr int history_size = normal_history_size + (Eff::friction ? 3 : 0);
+  // the tangential spring's 3 fields, then rolling resistance's 3 (compute/contact_forces.hpp)
+  static constexpr int history_size = normal_history_size + (Eff::friction ? 3 : 0) + (Eff::rolling ? 3 : 0);
 
   Kokkos::View<Nan2022PairConstants<T>*, Device> pairs;
   Kokkos::View<Nan2022PairDerived<T>*, Device> derived;  // the roots of pairs(k), taken on the host
   int nmat = 0;
+  RollingTable<T, Device, Eff::rolling> rolling;  // per material pair; empty unless Eff::rolling
 
   KOKKOS_FORCEINLINE_FUNCTION NormalForce<T> normal(const ContactGeometry<T>& g,
                                                     const HistoryRow<T, Device>& row) const {
@@ -130,7 +133,9 @@ struct Nan2022 {
         }
         table[a * n + b] = nan2022_pair_constants(materials[a], materials[b], opt);
       }
-    return create_from_pairs(n, table);
+    Nan2022 m = create_from_pairs(n, table);
+    m.rolling = RollingTable<T, Device, Eff::rolling>::create(materials);
+    return m;
   }
 };
 
