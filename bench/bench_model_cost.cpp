@@ -3,7 +3,9 @@
 // particle, 1.0e5 and 1.0e6 contacts), for Hertz-Mindlin, Hertz-JKR, Nan et al. 2022 and MDR,
 // with all their effects and with adhesion, plasticity or radius growth compiled out. Friction
 // and damping are on everywhere. The packing's overlaps (about 0.1 R) put every Nan and MDR
-// contact past yield. MDR with radius growth includes its per-particle update kernel.
+// contact past yield. MDR with radius growth includes its per-particle update kernel. The rolling
+// variants add rolling resistance (LAMMPS rolling sds) to the same set; the packing's particles
+// spin (random omega), so the rolling spring and dashpot act.
 #include <benchmark/benchmark.h>
 #include <epac/compute/contact_forces.hpp>
 #include <epac/models/hertz_mindlin.hpp>
@@ -46,6 +48,17 @@ template <class T>
 void BM_HertzMindlin(benchmark::State& s) {
   run(s, HertzMindlin<T, Effects<FD>>::create({bench::benchmark_powder()}));
 }
+// the powder with rolling resistance: k_r 1e3 N/m, gamma_r 1e-4 N s/m, mu_r 0.1
+Material rolling_powder(Material m) {
+  m.rolling_stiffness = 1e3;
+  m.rolling_damping = 1e-4;
+  m.rolling_friction = 0.1;
+  return m;
+}
+template <class T>
+void BM_HertzMindlin_Rolling(benchmark::State& s) {
+  run(s, HertzMindlin<T, Effects<FD | kRolling>>::create({rolling_powder(bench::benchmark_powder())}));
+}
 template <class T>
 void BM_HertzJKR(benchmark::State& s) {
   run(s, Jkr<T, Effects<FD | kAdhesion>>::create({bench::benchmark_powder()}));
@@ -65,6 +78,10 @@ void BM_Mdr(benchmark::State& s) {
   run(s, Mdr<T, Effects<ALL>>::create({bench::benchmark_powder()}));
 }
 template <class T>
+void BM_Mdr_Rolling(benchmark::State& s) {
+  run(s, Mdr<T, Effects<ALL | kRolling>>::create({rolling_powder(bench::benchmark_powder())}));
+}
+template <class T>
 void BM_Mdr_NoGrowth(benchmark::State& s) {
   run(s, Mdr<T, Effects<ALL & ~kRadiusGrowth>>::create({bench::benchmark_powder()}));
 }
@@ -80,10 +97,12 @@ void sizes(benchmark::internal::Benchmark* b) {
 }  // namespace
 
 BENCHMARK_TEMPLATE(BM_HertzMindlin, double)->Apply(sizes);
+BENCHMARK_TEMPLATE(BM_HertzMindlin_Rolling, double)->Apply(sizes);
 BENCHMARK_TEMPLATE(BM_HertzJKR, double)->Apply(sizes);
 BENCHMARK_TEMPLATE(BM_Nan2022, double)->Apply(sizes);
 BENCHMARK_TEMPLATE(BM_Nan2022_NoAdhesion, double)->Apply(sizes);
 BENCHMARK_TEMPLATE(BM_Mdr, double)->Apply(sizes);
+BENCHMARK_TEMPLATE(BM_Mdr_Rolling, double)->Apply(sizes);
 BENCHMARK_TEMPLATE(BM_Mdr_NoGrowth, double)->Apply(sizes);
 BENCHMARK_TEMPLATE(BM_Mdr_NoAdhesionNoGrowth, double)->Apply(sizes);
 BENCHMARK_TEMPLATE(BM_HertzMindlin, float)->Apply(sizes);

@@ -663,6 +663,10 @@ void finish_scene(Scene& s) {
       derive_effects(s.materials, std::vector<int>(pm.begin(), pm.end()), std::vector<int>(wm.begin(), wm.end()));
   if (!s.model.effects_overridden) {
     unsigned bits = s.model.derived_effects | entry.implied_effects;
+    if ((bits & kRolling) && !(bits & kFriction)) {
+      bits |= kFriction;  // rolling is compiled with friction; mu = 0 gives no tangential force
+      s.model.notes.push_back("rolling resistance without sliding friction: the friction effect is on with mu = 0");
+    }
     if (bits & kPlasticity) bits |= entry.implied_with_plasticity;
     s.model.effects = bits & entry.supported_effects;
     const unsigned ignored = s.model.derived_effects & ~entry.supported_effects;
@@ -672,12 +676,11 @@ void finish_scene(Scene& s) {
   }
 
   // Rolling resistance is compiled with sliding friction only (LAMMPS's granular styles always
-  // have a tangential model too).
+  // have a tangential model too); derived sets add it above.
   if ((s.model.effects & kRolling) && !(s.model.effects & kFriction))
     throw SceneError(
-        "effects: rolling without friction: the materials set rolling_friction > 0 (or [model] effects "
-        "names \"rolling\") but no contact has sliding friction; give the materials friction > 0 (or "
-        "add \"friction\" to [model] effects)");
+        "model.effects: rolling without friction: rolling resistance is compiled with the friction "
+        "effect; add \"friction\" to [model] effects (with friction = 0 it adds no tangential force)");
 
   // The model's own check (options against materials and effects) and its adhesive range: the
   // largest separation at which a contact stays active. The skin must exceed it, or an adhesive

@@ -98,7 +98,8 @@ template <template <class> class ModelOf, unsigned Supported, unsigned Required 
 std::unique_ptr<ContactEngine> dispatch(unsigned want, const std::vector<Material>& mats, const Create& create) {
   if constexpr (Bits > kAllEffects) {
     throw std::logic_error("epac plugin: no compiled instance for effects " + std::to_string(want));
-  } else if constexpr ((Bits & ~Supported) != 0u || (Bits & Required) != Required) {
+  } else if constexpr ((Bits & ~Supported) != 0u || (Bits & Required) != Required ||
+                       ((Bits & kRolling) != 0u && (Bits & kFriction) == 0u)) {
     return dispatch<ModelOf, Supported, Required, Bits + 1>(want, mats, create);
   } else {
     if (want == Bits) {
@@ -126,6 +127,7 @@ unsigned effects_of(const std::vector<Material>& mats) {
     if (std::isfinite(m.yield_stress)) e |= kPlasticity;
     if (m.friction > 0) e |= kFriction;
     if (m.restitution < 1) e |= kDamping;
+    if (m.rolling_friction > 0) e |= kRolling | kFriction;  // rolling is compiled with friction (mu 0: none)
   }
   return e;
 }
@@ -155,14 +157,15 @@ std::unique_ptr<ContactEngine> make_engine(Law law, const std::vector<Material>&
   mdr_opt.release = static_cast<MdrRelease>(mdr.release);
   switch (law) {
     case Law::hertz_mindlin:
-      return dispatch<HM, kFriction | kDamping>(
-          e & (kFriction | kDamping), mats, [&](auto* m) { return std::remove_pointer_t<decltype(m)>::create(mats); });
+      return dispatch<HM, kFriction | kDamping | kRolling>(e & (kFriction | kDamping | kRolling), mats, [&](auto* m) {
+        return std::remove_pointer_t<decltype(m)>::create(mats);
+      });
     case Law::jkr:
-      return dispatch<JKR, kAdhesion | kFriction | kDamping>(
-          e & (kAdhesion | kFriction | kDamping), mats,
+      return dispatch<JKR, kAdhesion | kFriction | kDamping | kRolling>(
+          e & (kAdhesion | kFriction | kDamping | kRolling), mats,
           [&](auto* m) { return std::remove_pointer_t<decltype(m)>::create(mats); });
     case Law::nan2022:
-      return dispatch<NAN22, kAdhesion | kPlasticity | kFriction | kDamping>(
+      return dispatch<NAN22, kAdhesion | kPlasticity | kFriction | kDamping | kRolling>(
           e, mats, [&](auto* m) { return std::remove_pointer_t<decltype(m)>::create(mats); });
     case Law::mdr:
       // Radius growth (MDR (37)-(39)) only when fix epac/mdr keeps the per-atom R_o and V and
@@ -171,11 +174,11 @@ std::unique_ptr<ContactEngine> make_engine(Law law, const std::vector<Material>&
       // only yielded sides grow R, so without a yield stress R stays R_o and the plain instance is
       // exact (radius_growth() then reports false and the host skips the update).
       if (radius_growth && (e & kPlasticity))
-        return dispatch<MDR, kAdhesion | kPlasticity | kFriction | kDamping | kRadiusGrowth,
+        return dispatch<MDR, kAdhesion | kPlasticity | kFriction | kDamping | kRadiusGrowth | kRolling,
                         kPlasticity | kRadiusGrowth>(e | kRadiusGrowth, mats, [&](auto* m) {
           return std::remove_pointer_t<decltype(m)>::create(mats, mdr_opt);
         });
-      return dispatch<MDR, kAdhesion | kPlasticity | kFriction | kDamping>(
+      return dispatch<MDR, kAdhesion | kPlasticity | kFriction | kDamping | kRolling>(
           e, mats, [&](auto* m) { return std::remove_pointer_t<decltype(m)>::create(mats, mdr_opt); });
   }
   throw std::logic_error("epac plugin: unknown law");

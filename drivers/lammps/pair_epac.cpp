@@ -156,6 +156,8 @@ void PairEpac::settings(int narg, char** arg) {
 // coefficient (0: no friction), gamma the surface energy [J/m^2] (0: no adhesion), Y the yield
 // stress [Pa] (inf: none), psi_b Part II's bulk-response threshold (not in epac: must be 0),
 // kt the constant tangential stiffness [N/m] of pair_style epac/mdr friction authors.
+// Every law also takes `rolling sds K_R GAMMA_R MU_R` after its coefficients: LAMMPS's rolling
+// resistance (models/rolling_resistance.hpp), k_r [N/m], gamma_r [N s/m], mu_r.
 int PairEpac::coefficient_count() const {
   switch (law_) {
     case Law::hertz_mindlin:
@@ -212,10 +214,10 @@ epac::Material PairEpac::material_from(char** arg, int type) const {
 void PairEpac::coeff(int narg, char** arg) {
   if (!allocated) allocate();
   const int nc = coefficient_count();
-  const bool mdr_keys = (law_ == Law::mdr && narg > 2 + nc && (narg - 2 - nc) % 2 == 0 && narg <= 2 + nc + 4);
-  if (narg != 2 + nc && !mdr_keys)
-    error->all(FLERR, "Incorrect args for pair_coeff {}: expected {} coefficients{}", style_, nc,
-               law_ == Law::mdr ? " and optionally mu MU, kt KT" : "");
+  const char* optional = law_ == Law::mdr ? " and optionally mu MU, kt KT, rolling sds K_R GAMMA_R MU_R"
+                                          : " and optionally rolling sds K_R GAMMA_R MU_R";
+  if (narg < 2 + nc)
+    error->all(FLERR, "Incorrect args for pair_coeff {}: expected {} coefficients{}", style_, nc, optional);
   int ilo, ihi, jlo, jhi;
   utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
   utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
@@ -227,15 +229,26 @@ void PairEpac::coeff(int narg, char** arg) {
                style_);
   epac::Material m = material_from(arg + 2, ilo);
   double kt = 0.0;
-  for (int k = 2 + nc; mdr_keys && k < narg; k += 2) {
-    if (std::strcmp(arg[k], "mu") == 0)
+  for (int k = 2 + nc; k < narg;) {
+    if (std::strcmp(arg[k], "rolling") == 0) {
+      // LAMMPS's `rolling sds k_r gamma_r mu_r` (models/rolling_resistance.hpp)
+      if (k + 4 >= narg || std::strcmp(arg[k + 1], "sds") != 0)
+        error->all(FLERR, "pair_coeff {}: rolling expects 'sds K_R GAMMA_R MU_R' (the only rolling model)", style_);
+      m.rolling_stiffness = utils::numeric(FLERR, arg[k + 2], false, lmp);
+      m.rolling_damping = utils::numeric(FLERR, arg[k + 3], false, lmp);
+      m.rolling_friction = utils::numeric(FLERR, arg[k + 4], false, lmp);
+      k += 5;
+    } else if (law_ == Law::mdr && k + 1 < narg && std::strcmp(arg[k], "mu") == 0) {
       m.friction = utils::numeric(FLERR, arg[k + 1], false, lmp);
-    else if (std::strcmp(arg[k], "kt") == 0) {
+      k += 2;
+    } else if (law_ == Law::mdr && k + 1 < narg && std::strcmp(arg[k], "kt") == 0) {
       kt = utils::numeric(FLERR, arg[k + 1], false, lmp);
       if (!(kt > 0.0) || !std::isfinite(kt))
         error->all(FLERR, "pair_coeff {}: kt = {} is not valid (valid: 0 < kt < inf, N/m)", style_, kt);
+      k += 2;
     } else
-      error->all(FLERR, "pair_coeff {}: unknown keyword {} (valid: mu, kt)", style_, arg[k]);
+      error->all(FLERR, "pair_coeff {}: unknown keyword or missing value {} (valid: {})", style_, arg[k],
+                 law_ == Law::mdr ? "mu MU, kt KT, rolling sds K_R GAMMA_R MU_R" : "rolling sds K_R GAMMA_R MU_R");
   }
   try {
     m.validate();
@@ -649,24 +662,28 @@ void PairEpac::transfer_history(double* source, double* target, int, int) {
 void PairEpac::write_restart(FILE* fp) {
   for (int i = 1; i <= atom->ntypes; i++) {
     const epac::Material& m = materials_[i - 1];
-    const double v[8] = {m.youngs_modulus,
-                         m.poisson_ratio,
-                         m.restitution,
-                         m.friction,
-                         m.surface_energy,
-                         m.yield_stress,
-                         static_cast<double>(have_material_[i - 1]),
-                         kt_[i - 1]};
-    fwrite(v, sizeof(double), 8, fp);
+    // 11 values per type (8 before rolling resistance: restart files of earlier versions do not read)
+    const double v[11] = {m.youngs_modulus,
+                          m.poisson_ratio,
+                          m.restitution,
+                          m.friction,
+                          m.surface_energy,
+                          m.yield_stress,
+                          static_cast<double>(have_material_[i - 1]),
+                          kt_[i - 1],
+                          m.rolling_stiffness,
+                          m.rolling_damping,
+                          m.rolling_friction};
+    fwrite(v, sizeof(double), 11, fp);
   }
 }
 
 void PairEpac::read_restart(FILE* fp) {
   allocate();
   for (int i = 1; i <= atom->ntypes; i++) {
-    double v[8];
-    if (comm->me == 0) utils::sfread(FLERR, v, sizeof(double), 8, fp, nullptr, error);
-    MPI_Bcast(v, 8, MPI_DOUBLE, 0, world);
+    double v[11];
+    if (comm->me == 0) utils::sfread(FLERR, v, sizeof(double), 11, fp, nullptr, error);
+    MPI_Bcast(v, 11, MPI_DOUBLE, 0, world);
     epac::Material& m = materials_[i - 1];
     m.name = "type " + std::to_string(i);
     m.density = 1.0;
@@ -678,6 +695,9 @@ void PairEpac::read_restart(FILE* fp) {
     m.yield_stress = v[5];
     have_material_[i - 1] = v[6] != 0.0;
     kt_[i - 1] = v[7];
+    m.rolling_stiffness = v[8];
+    m.rolling_damping = v[9];
+    m.rolling_friction = v[10];
     for (int j = i; j <= atom->ntypes; j++) setflag[i][j] = have_material_[i - 1] && have_material_[j - 1];
   }
 }

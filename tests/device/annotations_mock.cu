@@ -15,6 +15,7 @@
 #include <epac/core/vec3.hpp>
 #include <epac/models/mdr/detail/mdr_adhesion.hpp>
 #include <epac/models/mdr/mdr_parameters.hpp>
+#include <epac/models/rolling_resistance.hpp>
 #include <epac/state/contact_history.hpp>
 #include <epac/state/contact_list.hpp>
 
@@ -28,6 +29,9 @@ __global__ void device_paths(T* out, T* row) {
   out[0] = epac::mdr_critical_radius<T>(T(1e9), T(0.1), T(1), T(4e-3), T(2e-3));
   out[1] = epac::mdr_peeling_radius<T>(T(1e9), T(0.1), T(4e-3), T(2e-3), T(1e-6), T(1e-4), T(1e-3));
   out[2] = T(epac::pair_key(3, 7) + epac::wall_key(3, 1));
+  // rolling resistance's spring-dashpot-slider (every law's kRolling)
+  const epac::RollingPair<T> rp{T(1e3), T(1e-3), T(0.1)};
+  out[3] = epac::rolling_sds_force(rp, b, a, T(1), T(1e-6), h).x;
 }
 
 int main() {

@@ -212,9 +212,13 @@ steps = 1
   CHECK(roll.materials[0].rolling_damping == 1e-4);
   CHECK(effect_names(kRolling) == "rolling");
   CHECK(effect_bit("rolling") == unsigned(kRolling));
+  // without sliding friction: the friction effect comes with it (mu = 0), with a note
+  const Scene roll0 = parse_scene_string(scene("rolling_friction = 0.1", ""));
+  CHECK(roll0.model.effects == unsigned(kFriction | kRolling));
+  CHECK(roll0.model.notes.size() == 1);
   try {
-    parse_scene_string(scene("rolling_friction = 0.1", ""));
-    FAIL("rolling without friction accepted");
+    parse_scene_string(scene("rolling_friction = 0.1", "effects = [\"rolling\"]"));
+    FAIL("an override of rolling without friction accepted");
   } catch (const SceneError& e) { CHECK(std::string(e.what()).find("rolling without friction") != std::string::npos); }
   try {
     parse_scene_string(scene("friction = 0.5\nrolling_damping = -1", ""));

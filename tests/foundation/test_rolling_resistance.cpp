@@ -209,7 +209,7 @@ TEMPLATE_LIST_TEST_CASE("rolling resistance is passive: a spinning sphere on a p
     slipped = slipped || Mr >= 0.999 * R * mu_r * f;
   }
   CHECK(E_max <= 1.02 * E0);
-  CHECK(slipped);        // the run reached the slider, not only the spring
+  CHECK(slipped);  // the run reached the slider, not only the spring
   const double E_slider = 0.5 * (mu_r * f) * (mu_r * f) / k_r;
   REQUIRE(E_slider < 0.05 * E0);
   CHECK(E <= 1.1 * E_slider);  // the spin was stopped by the slider
@@ -254,8 +254,9 @@ TEST_CASE("rolling keys are validated on the host with their name, value and ran
   for (const char* key : {"rolling_stiffness", "rolling_damping", "rolling_friction"}) {
     Material m = grain(0.1, 1, 1);
     const std::string k = key;
-    (k == "rolling_stiffness" ? m.rolling_stiffness : k == "rolling_damping" ? m.rolling_damping : m.rolling_friction) =
-        -1;
+    (k == "rolling_stiffness" ? m.rolling_stiffness
+     : k == "rolling_damping" ? m.rolling_damping
+                              : m.rolling_friction) = -1;
     try {
       m.validate();
       FAIL("accepted " << k << " = -1");

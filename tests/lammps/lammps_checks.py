@@ -9,6 +9,12 @@ CHECK is one of
                   forces at steps 0 and 1 to round-off, positions and velocities after 1,000
                   steps within 1e-8. Damping and friction are off in both: their conventions
                   differ (drivers/lammps/README.md); the differences they make are printed.
+  rolling_vs_granular
+                  rolling resistance: epac/hertz_mindlin ... rolling sds against LAMMPS's
+                  `granular hertz/material ... rolling sds` (no sliding friction, no damping in
+                  either), with and without the dashpot: a pair (in.rolling_pair) through slip and
+                  stick to round-off over 2,000 steps, and the settled packing with every atom
+                  spinning (random omega up to 200 rad/s): torques at steps 0 and 1 to round-off.
   ranks           1 against 2 MPI ranks: the same thermo output (12 printed digits) for
                   epac/hertz_mindlin with damping and friction (newton on and off), epac/mdr
                   with plasticity, adhesion and damping, and epac/mdr with friction, fix epac/mdr
@@ -79,7 +85,7 @@ def read_dump(path):
     for l in lines[start:]:
         v = l.split()
         rows[int(v[0])] = [float(x) for x in v[1:]]
-    return rows  # id -> x y z vx vy vz fx fy fz tqx tqy tqz
+    return rows  # id -> x y z vx vy vz fx fy fz tqx tqy tqz omegax omegay omegaz
 
 
 def max_rel(a, b, cols, scale=None):
@@ -90,7 +96,10 @@ def max_rel(a, b, cols, scale=None):
         rb = b[i]
         diff = max(diff, max(abs(ra[c] - rb[c]) for c in cols))
         big = max(big, max(abs(rb[c]) for c in cols))
-    return diff / (scale if scale else big), big
+    d = scale if scale else big
+    if d == 0:  # all zero in b: equal only if a is too
+        return (0.0 if diff == 0 else math.inf), big
+    return diff / d, big
 
 
 def hm_vs_granular(args):
@@ -145,6 +154,56 @@ def hm_vs_granular(args):
         print(f"  info {label}: step 1 max |dF|/max|F| = {f1:.2e}, step {steps} max |dx|/R = {xN:.2e}")
 
 
+def rolling_vs_granular(args):
+    print("rolling_vs_granular: epac/hertz_mindlin rolling sds vs granular hertz/material rolling sds")
+    # k_r 1000 N/m, gamma_r 0.01 N s/m, mu_r 0.1 (and gamma_r 0): the dashpot alone exceeds mu_r f
+    # at first, so the slider, then the spring and the dashpot act within each run
+    rolls = (("spring, dashpot, slider", "rolling sds 1000 0.01 0.1"),
+             ("spring and slider, no dashpot", "rolling sds 1000 0 0.1"))
+    # (1) One pair (in.rolling_pair), 2,000 steps, every 100 steps: torques and angular velocities
+    # to round-off (two bodies: no chaos to amplify it; sliding friction and damping off in both)
+    for case, (label, roll) in enumerate(rolls):
+        runs = {}
+        for name, style, coeffs in (("lammps", "granular", GRANULAR_HM + " " + roll),
+                                    ("epac", "epac/hertz_mindlin", EPAC_HM + " " + roll)):
+            tag = f"pair_{name}_{case}"
+            lmp(args, variables=[("style", style), ("coeffs", coeffs), ("dump", tag)], tag=tag,
+                infile=os.path.join(HERE, "in.rolling_pair"))
+            runs[name] = {s: read_dump(os.path.join(args.work, f"{tag}.{s}.dump")) for s in range(0, 2001, 100)}
+        tq = max(max_rel(runs["epac"][s], runs["lammps"][s], (9, 10, 11))[0] for s in runs["epac"])
+        w = max(max_rel(runs["epac"][s], runs["lammps"][s], (12, 13, 14))[0] for s in runs["epac"])
+        t0 = runs["lammps"][0][2][10]
+        t_end = runs["lammps"][2000][2][10]
+        check(tq < 1e-12 and w < 1e-12, f"pair, {label}: every 100 steps to 2,000, max |T_epac - T_lammps| / max |T| = "
+                                         f"{tq:.1e}, max |w_epac - w_lammps| / max |w| = {w:.1e} (< 1e-12; "
+                                         f"T_y of sphere 2 {t0:.3e} -> {t_end:.3e} N m)")
+    # (2) The settled packing (4,000 spheres, ~11,000 contacts) with every atom spinning: torques at
+    # steps 0 and 1 to round-off. Not asserted later: LAMMPS negates a pair's rolling history when a
+    # neighbour-list rebuild names the pair the other way round (fix NEIGH_HISTORY's default
+    # transfer factor -1; the rolling displacement R* (w_i - w_j) x n is the same for (i, j) and
+    # (j, i), and epac keeps it), so the runs part where that happens; printed.
+    lmp(args, variables=[("style", "granular"), ("coeffs", GRANULAR_HM), ("writedata", "settled")], tag="prepare")
+    steps = 1000
+    R = 1e-3
+    for case, (label, roll) in enumerate(rolls):
+        runs = {}
+        for name, style, coeffs in (("lammps", "granular", GRANULAR_HM + " " + roll),
+                                    ("epac", "epac/hertz_mindlin", EPAC_HM + " " + roll)):
+            tag = f"{name}_roll{case}"
+            lmp(args, variables=[("style", style), ("coeffs", coeffs), ("data", "settled"), ("dump", tag),
+                                 ("steps", str(steps)), ("spin", "200")], tag=tag)
+            runs[name] = {s: read_dump(os.path.join(args.work, f"{tag}.{s}.dump")) for s in (0, 1, steps)}
+        for s in (0, 1):
+            rel, big = max_rel(runs["epac"][s], runs["lammps"][s], (9, 10, 11))
+            # a torque is a sum of ~6 contact torques R* |F_r| <= R* mu_r f: round-off ~1e-16 of them
+            check(rel < 1e-12, f"packing, {label}, step {s}: max |T_epac - T_lammps| / max |T| = {rel:.2e} "
+                               f"(max |T| {big:.3e} N m) < 1e-12")
+        xr, _ = max_rel(runs["epac"][steps], runs["lammps"][steps], (0, 1, 2), scale=R)
+        wr, _ = max_rel(runs["epac"][steps], runs["lammps"][steps], (12, 13, 14))
+        print(f"  info packing, {label}, step {steps}: max |dx| / R = {xr:.1e}, max |dw| / max |w| = {wr:.1e} "
+              f"(LAMMPS's history sign on reordered pairs)")
+
+
 def thermo_equal(a, b, what):
     steps = sorted(set(a) & set(b))
     same = all(a[s] == b[s] for s in steps)
@@ -180,6 +239,8 @@ def restart(args):
     print("restart: write_restart at step 500, read_restart in a new process, 1,000 steps")
     cases = (("epac/hertz_mindlin", "1e7 0.3 1 0", True),     # no velocity-dependent force
              ("epac/hertz_mindlin", "1e7 0.3 0.5 0.4", False),  # damping and friction
+             # + rolling resistance: its coefficients and history through the restart file
+             ("epac/hertz_mindlin", "1e7 0.3 0.5 0.4 rolling sds 1000 0.01 0.1", False),
              ("epac/mdr", "1e7 0.3 2e5 0.05 0 0.5", False),
              ("epac/mdr", "1e7 0.3 5e3 0.05 0 0.5", "growth"),  # + fix epac/mdr (newton off; radii grow by 1e-4)
              # + the floor as fix epac/wall with friction: its per-atom history through the restart file
@@ -221,7 +282,7 @@ def main():
     ap.add_argument("--plugin", required=True)
     ap.add_argument("--mpiexec", default="")
     ap.add_argument("--work", required=True)
-    ap.add_argument("check", choices=["hm_vs_granular", "ranks", "restart"])
+    ap.add_argument("check", choices=["hm_vs_granular", "rolling_vs_granular", "ranks", "restart"])
     args = ap.parse_args()
     args.plugin = os.path.abspath(args.plugin)
     if os.path.isdir(args.work):

@@ -146,7 +146,7 @@ KOKKOS_FORCEINLINE_FUNCTION void finish_contact(const Model& model, const Conv& 
   const auto rrow = trow.shifted(Eff::friction ? 3 : 0);  // rolling resistance's fields
   if (!nf.active) {
     if (Eff::friction) reset_tangential(trow);
-    if constexpr (rolling) reset_rolling(rrow);
+    if (rolling) reset_rolling(rrow);
     if (out.normal_force.extent(0) > 0) out.normal_force(k) = T(0);
     if (out.overlap.extent(0) > 0) out.overlap(k) = g.delta;
     if (buf.enabled()) {
@@ -205,7 +205,7 @@ KOKKOS_FORCEINLINE_FUNCTION void finish_contact(const Model& model, const Conv& 
     // negation is exact: the listed first particle gets the bits of -F when it is g.j
     Vec3<T> t_i = Eff::friction ? (-arm_i) * nxft : Vec3<T>();
     Vec3<T> t_j = Eff::friction ? (-arm_j) * nxft : Vec3<T>();
-    if constexpr (rolling) {
+    if (rolling) {  // a plain if: t_roll stays referenced where rolling is compiled out (nvcc warns otherwise)
       t_i += t_roll;
       t_j -= t_roll;
     }
@@ -215,7 +215,7 @@ KOKKOS_FORCEINLINE_FUNCTION void finish_contact(const Model& model, const Conv& 
   } else {
     scatter_add3(fa, g.i, F);
     if (IsPair) scatter_add3(fa, g.j, T(-1) * F);
-    if constexpr (rolling) {
+    if (rolling) {
       scatter_add3(ta, g.i, (-arm_i) * nxft + t_roll);
       if (IsPair) scatter_add3(ta, g.j, (-arm_j) * nxft - t_roll);
     } else if (Eff::friction) {

@@ -95,10 +95,15 @@ KOKKOS_FORCEINLINE_FUNCTION Vec3<T> rolling_sds_force(const RollingPair<T>& rp, 
     // Slipping: F_r along itself with |F_r| = mu_r |f_c|, and the spring set so that
     // -k_r xi - gamma_r v_rl is exactly that (LAMMPS; it also keeps the damping part).
     const Vec3<T> fr_lim = (f_lim / math::sqrt(fr2)) * fr;  // fr2 > f_lim^2 >= 0
-    if (rp.k > T(0)) xi = (T(-1) / rp.k) * (fr_lim + rp.gamma * v_rl);
-    // k_r == 0: no spring; LAMMPS would divide by it. (LAMMPS also zeroes F_r when xi == 0, i.e.
-    // at a first pass with dt = 0; here it is held at the limit like any other slip.)
-    fr = fr_lim;
+    if (rp.k > T(0)) {
+      // xi == 0 here only in a pass with dt = 0 (a run's first): LAMMPS then drops F_r, and so
+      // does epac, so that the two agree from the first step.
+      const bool unloaded = xi.x == T(0) && xi.y == T(0) && xi.z == T(0);
+      if (!unloaded) xi = (T(-1) / rp.k) * (fr_lim + rp.gamma * v_rl);
+      fr = unloaded ? Vec3<T>() : fr_lim;
+    } else {
+      fr = fr_lim;  // k_r == 0: a dashpot held at the bound (LAMMPS would divide by k_r)
+    }
   }
   h(0) = xi.x;
   h(1) = xi.y;

@@ -17,15 +17,16 @@ struct Material {
   double friction = 0;            // sliding friction coefficient mu >= 0; 0 = no friction
   double surface_energy = 0;      // Gamma (Nan) = Delta gamma (MDR) [J/m^2]; 0 = no adhesion
   double yield_stress = std::numeric_limits<double>::infinity();  // Y or sigma_y [Pa]; inf = no yield
-  // Rolling resistance (models/rolling_resistance.hpp; LAMMPS `rolling sds k_r gamma_r mu_r`):
-  // rolling_friction mu_r > 0 turns it on.
-  double rolling_stiffness = 0;  // k_r [N/m] >= 0
-  double rolling_damping = 0;    // gamma_r [N s/m] >= 0
-  double rolling_friction = 0;   // mu_r >= 0; 0 = no rolling resistance
-  bool rigid = false;            // rigid body (walls): contributes no compliance
+  bool rigid = false;                                             // rigid body (walls): contributes no compliance
   // Rigid only: its own restitution, friction and surface energy for its contacts (default: a
   // rigid wall takes the particle's). E.g. a die wall with less friction than the powder.
   bool own_surface_properties = false;
+  // Rolling resistance (models/rolling_resistance.hpp; LAMMPS `rolling sds k_r gamma_r mu_r`):
+  // rolling_friction mu_r > 0 turns it on. Last, so that positional initialisers of the fields
+  // above keep their meaning.
+  double rolling_stiffness = 0;  // k_r [N/m] >= 0
+  double rolling_damping = 0;    // gamma_r [N s/m] >= 0
+  double rolling_friction = 0;   // mu_r >= 0; 0 = no rolling resistance
 
   double shear_modulus() const { return youngs_modulus / (2.0 * (1.0 + poisson_ratio)); }
 
