@@ -251,7 +251,7 @@ TEST_CASE("Material::own_surface_properties: a rigid wall with its own friction,
   w.restitution = 0.9;
   for (const bool own : {false, true}) {
     w.own_surface_properties = own;
-    for (const PairProperties pp : {pair_properties(p, w), pair_properties(w, p)}) {
+    for (const PairProperties& pp : {pair_properties(p, w), pair_properties(w, p)}) {
       CHECK(pp.friction == (own ? 0.1 : 0.7));
       CHECK(pp.surface_energy == (own ? 0.0 : 2.0));
       CHECK(pp.restitution == (own ? 0.9 : 0.5));
