@@ -5,7 +5,9 @@
 // and damping are on everywhere. The packing's overlaps (about 0.1 R) put every Nan and MDR
 // contact past yield. MDR with radius growth includes its per-particle update kernel. The rolling
 // variants add rolling resistance (LAMMPS rolling sds) to the same set; the packing's particles
-// spin (random omega), so the rolling spring and dashpot act.
+// spin (random omega), so the rolling spring and dashpot act. BM_Mdr_Penalty adds MDR's contact
+// penalty (MdrOptions::contact_penalty): its weights every pass, the per-particle index of the
+// list once (as between rebuilds).
 #include <benchmark/benchmark.h>
 #include <epac/compute/contact_forces.hpp>
 #include <epac/models/hertz_mindlin.hpp>
@@ -19,6 +21,14 @@ using namespace epac;
 
 namespace {
 
+// MDR's contact penalty before each pass (a no-op unless the option is on); nothing for the others
+template <class Model, class P, class C>
+void prepare(Model&, const P&, const C&) {}
+template <class T, class Eff, class D, class P, class C>
+void prepare(Mdr<T, Eff, D>& m, const P& p, const C& c) {
+  m.compute_contact_penalty(p, c, -1, 0);
+}
+
 template <class Model>
 void run(benchmark::State& state, Model model) {
   using T = typename Model::scalar_type;
@@ -30,6 +40,7 @@ void run(benchmark::State& state, Model model) {
   ForceSums<T, D> sums(pk.particles);  // per-thread copies allocated once, as in a simulation
   for (auto _ : state) {
     zero_forces(pk.particles);
+    prepare(model, pk.particles, pk.contacts);
     sums.begin();
     compute_pair_forces(model, pk.particles, pk.contacts, h, T(1e-9), sums);
     sums.end();
@@ -78,6 +89,12 @@ void BM_Mdr(benchmark::State& s) {
   run(s, Mdr<T, Effects<ALL>>::create({bench::benchmark_powder()}));
 }
 template <class T>
+void BM_Mdr_Penalty(benchmark::State& s) {
+  MdrOptions o;
+  o.contact_penalty = true;
+  run(s, Mdr<T, Effects<ALL>>::create({bench::benchmark_powder()}, o));
+}
+template <class T>
 void BM_Mdr_Rolling(benchmark::State& s) {
   run(s, Mdr<T, Effects<ALL | kRolling>>::create({rolling_powder(bench::benchmark_powder())}));
 }
@@ -103,6 +120,7 @@ BENCHMARK_TEMPLATE(BM_Nan2022, double)->Apply(sizes);
 BENCHMARK_TEMPLATE(BM_Nan2022_NoAdhesion, double)->Apply(sizes);
 BENCHMARK_TEMPLATE(BM_Mdr, double)->Apply(sizes);
 BENCHMARK_TEMPLATE(BM_Mdr_Rolling, double)->Apply(sizes);
+BENCHMARK_TEMPLATE(BM_Mdr_Penalty, double)->Apply(sizes);
 BENCHMARK_TEMPLATE(BM_Mdr_NoGrowth, double)->Apply(sizes);
 BENCHMARK_TEMPLATE(BM_Mdr_NoAdhesionNoGrowth, double)->Apply(sizes);
 BENCHMARK_TEMPLATE(BM_HertzMindlin, float)->Apply(sizes);

@@ -50,8 +50,9 @@ ContactRows collect_contacts(const typename F::model_type& model, const Particle
       const auto hd = h.data;
       Kokkos::parallel_for(
           "epac::driver::contact_extras", Kokkos::RangePolicy<exec>(0, n), KOKKOS_LAMBDA(int k) {
-            const ContactGeometry<T> g = is_wall ? wall_geometry(pp, ww, l.first(k), l.second(k), nmat)
-                                                 : pair_geometry(pp, l.first(k), l.second(k), nmat);
+            ContactGeometry<T> g = is_wall ? wall_geometry(pp, ww, l.first(k), l.second(k), nmat)
+                                           : pair_geometry(pp, l.first(k), l.second(k), nmat);
+            g.contact = k;  // per-contact state of the pass (MDR's contact penalty weights)
             T vals[ne > 0 ? ne : 1];
             F::contact_extras(m, g, HistoryRow<T, Device>{hd, k, 0}, vals);
             for (int c = 0; c < ne; ++c) extra(k, c) = vals[c];

@@ -23,6 +23,7 @@
 #include <epac/state/contact_history.hpp>
 #include <epac/state/particles.hpp>
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -39,9 +40,10 @@ struct ModelFactoryBase {
   // apparent-radius state to the particles' radii).
   template <class P>
   static void bind(Model&, const P&) {}
-  // Called before every force pass (after zero_forces), with the step's dt (0 for the first pass).
-  template <class P, class T>
-  static void before_forces(const Model&, const P&, T) {}
+  // Called before every force pass (after zero_forces), with the pair list the pass evaluates, its
+  // build count (changes whenever the list does) and the step's dt (0 for the first pass).
+  template <class P, class L, class T>
+  static void before_forces(const Model&, const P&, const L&, std::int64_t, T) {}
   // Called after every force pass, before the closing half kick (MDR particle update, design
   // section 4 step 4).
   template <class P, class T>

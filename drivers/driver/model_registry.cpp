@@ -29,6 +29,7 @@ const std::vector<ModelEntry>& model_registry() {
         choice_key("surface_energy_share", {"series", "each_side_full"}, 0),
         choice_key("adhesive_radius", {"paper", "authors"}, 0),
         choice_key("release", {"critical_overlap", "zero_overlap"}, 0),
+        choice_key("contact_penalty", {"off", "on"}, 0),  // LAMMPS's MDR penalty (mdr_contact_penalty.hpp)
         {"tangential_stiffness", 0.0, Bound::closed, inf, Bound::open, true, 0.0},  // k_t [N/m] of friction "authors"
         {"radius_cap", 1.0, Bound::closed, 10.0, Bound::closed, true, 1.5},         // R <= cap R_o
         {"denominator_floor", 0.0, Bound::open, 1.0, Bound::open, true, 0.05},      // guard of (37)

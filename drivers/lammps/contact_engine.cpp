@@ -43,6 +43,15 @@ struct GrowthOf<Mdr<double, Eff>> {
   static double cap(const Mdr<double, Eff>& m) { return Eff::radius_growth ? double(m.growth.radius_cap) : 1.0; }
 };
 
+// MDR's contact penalty (a no-op for the other laws and with the option off)
+template <class Model>
+void prepare_model(Model&, const Particles<double>&, const ContactList<>&, int, std::int64_t) {}
+template <class Eff>
+void prepare_model(Mdr<double, Eff>& m, const Particles<double>& p, const ContactList<>& pairs, int nlocal,
+                   std::int64_t stamp) {
+  m.compute_contact_penalty(p, pairs, nlocal, stamp);
+}
+
 template <class Model>
 class EngineFor final : public ContactEngine {
  public:
@@ -56,6 +65,9 @@ class EngineFor final : public ContactEngine {
       bind_model(model_, particles_);
     }
     return particles_;
+  }
+  void prepare_pass(const ContactList<>& pairs, int nlocal, std::int64_t list_stamp) override {
+    prepare_model(model_, particles_, pairs, nlocal, list_stamp);
   }
   void compute(const ContactList<>& pairs, const ContactHistory<double>& history, double dt,
                const ContactForceBuffer<double, DefaultDevice>& buffer, const WallPass* walls) override {
@@ -139,11 +151,11 @@ std::unique_ptr<ContactEngine> make_engine(Law law, const std::vector<Material>&
   if (radius_growth && law != Law::mdr)
     throw std::invalid_argument("epac plugin: radius growth is an MDR effect (fix epac/mdr needs pair_style epac/mdr)");
   if ((mdr.pair_split != 0 || mdr.delta_max != 0 || mdr.damping != 0 || mdr.friction != 0 || mdr.yield_onset != 0 ||
-       mdr.surface_energy_share != 0 || mdr.adhesive_radius != 0 || mdr.release != 0) &&
+       mdr.surface_energy_share != 0 || mdr.adhesive_radius != 0 || mdr.release != 0 || mdr.contact_penalty) &&
       law != Law::mdr)
     throw std::invalid_argument(
         "epac plugin: pair_split, delta_max, damping, friction, yield_onset, "
-        "surface_energy_share, adhesive_radius and release are MDR options");
+        "surface_energy_share, adhesive_radius, release and contact_penalty are MDR options");
   const unsigned e = effects_of(mats);
   MdrOptions mdr_opt;
   mdr_opt.pair_split = static_cast<MdrPairSplit>(mdr.pair_split);
@@ -155,6 +167,7 @@ std::unique_ptr<ContactEngine> make_engine(Law law, const std::vector<Material>&
   mdr_opt.surface_energy_share = static_cast<MdrSurfaceEnergyShare>(mdr.surface_energy_share);
   mdr_opt.adhesive_radius = static_cast<MdrAdhesiveRadius>(mdr.adhesive_radius);
   mdr_opt.release = static_cast<MdrRelease>(mdr.release);
+  mdr_opt.contact_penalty = mdr.contact_penalty;
   switch (law) {
     case Law::hertz_mindlin:
       return dispatch<HM, kFriction | kDamping | kRolling>(e & (kFriction | kDamping | kRolling), mats, [&](auto* m) {

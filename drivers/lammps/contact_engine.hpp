@@ -10,6 +10,7 @@
 #include <epac/state/particles.hpp>
 #include <epac/state/walls.hpp>
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -42,6 +43,10 @@ class ContactEngine {
   // `walls` (may be null): wall contacts evaluated in the same pass (the same growth sums).
   virtual void compute(const ContactList<>& pairs, const ContactHistory<double>& history, double dt,
                        const ContactForceBuffer<double, DefaultDevice>& buffer, const WallPass* walls = nullptr) = 0;
+  // Before compute(), with particles() filled: per-pass work of the law on the pair list (MDR's
+  // contact penalty weights; nothing for the other laws). Atoms past nlocal are ghosts;
+  // list_stamp changes whenever the list does.
+  virtual void prepare_pass(const ContactList<>& /*pairs*/, int /*nlocal*/, std::int64_t /*list_stamp*/) {}
   // The largest separation at which the law still holds two spheres of radii Ri, Rj of
   // materials a, b together (0 without adhesion): the neighbour cutoff must reach it.
   virtual double critical_separation(int a, int b, double Ri, double Rj) const = 0;
@@ -71,6 +76,7 @@ struct MdrChoices {
   int pair_split = 0, delta_max = 0, damping = 0, friction = 0, yield_onset = 0, surface_energy_share = 0,
       adhesive_radius = 0, release = 0;
   double kt = 0.0;
+  bool contact_penalty = false;  // MdrOptions::contact_penalty
 };
 std::unique_ptr<ContactEngine> make_engine(Law law, const std::vector<Material>& materials, bool radius_growth = false,
                                            const MdrChoices& mdr = {});

@@ -88,7 +88,7 @@ void PairEpac::allocate() {
 // pair_style epac/<law> [pair_split equal_pair|balanced|geometric] [delta_max paper_19|running_max]
 // [damping restitution_exact|authors] [friction mindlin|authors] [yield_onset elastic_law|hertz_40]
 // [surface_energy_share series|each_side_full] [adhesive_radius paper|authors]
-// [release critical_overlap|zero_overlap] (epac/mdr only): pair_split
+// [release critical_overlap|zero_overlap] [contact_penalty off|on] (epac/mdr only): pair_split
 // makes each side a side of the equivalent equal pair (equal_pair, the default: Hertz with E* and
 // R*, same-material similarity, passive), each particle's own sphere where the sides' scaled forces
 // balance (balanced, the default until 0.x) or the authors' radical plane (geometric; not
@@ -101,7 +101,9 @@ void PairEpac::allocate() {
 // sides in series (JKR between the spheres) or in full on each side (the authors' code);
 // adhesive_radius: the stored adhesive radius a_na (paper) or 0.99 a_na (the authors' code);
 // release: an adhesive contact ends at its critical overlap (epac) or at zero overlap (the
-// authors' code). All set to the authors' choices for comparisons with granular mdr.
+// authors' code); contact_penalty: LAMMPS's MDR contact penalty (epac::MdrOptions::contact_penalty,
+// off by default; LAMMPS's granular mdr always applies it; needs newton off). All set to the
+// authors' choices for comparisons with granular mdr.
 void PairEpac::settings(int narg, char** arg) {
   pair_split_ = 0;
   delta_max_ = 0;
@@ -111,6 +113,7 @@ void PairEpac::settings(int narg, char** arg) {
   energy_share_ = 0;
   adhesive_radius_ = 0;
   release_ = 0;
+  contact_penalty_ = 0;
   struct Keyword {
     const char* name;
     int* value;
@@ -123,7 +126,8 @@ void PairEpac::settings(int narg, char** arg) {
                           {"yield_onset", &yield_onset_, {"elastic_law", "hertz_40"}},
                           {"surface_energy_share", &energy_share_, {"series", "each_side_full"}},
                           {"adhesive_radius", &adhesive_radius_, {"paper", "authors"}},
-                          {"release", &release_, {"critical_overlap", "zero_overlap"}}};
+                          {"release", &release_, {"critical_overlap", "zero_overlap"}},
+                          {"contact_penalty", &contact_penalty_, {"off", "on"}}};
   for (int k = 0; k < narg; k += 2) {
     const Keyword* key = nullptr;
     for (const auto& kw : keys)
@@ -133,7 +137,8 @@ void PairEpac::settings(int narg, char** arg) {
                  law_ == Law::mdr ? "pair_split equal_pair|balanced|geometric, delta_max paper_19|running_max, "
                                     "damping restitution_exact|authors, friction mindlin|authors, "
                                     "yield_onset elastic_law|hertz_40, surface_energy_share series|each_side_full, "
-                                    "adhesive_radius paper|authors, release critical_overlap|zero_overlap"
+                                    "adhesive_radius paper|authors, release critical_overlap|zero_overlap, "
+                                    "contact_penalty off|on"
                                   : "no arguments");
     int found = -1;
     for (std::size_t q = 0; q < key->choices.size(); q++)
@@ -298,6 +303,14 @@ void PairEpac::init_style() {
   choices.surface_energy_share = energy_share_;
   choices.adhesive_radius = adhesive_radius_;
   choices.release = release_;
+  choices.contact_penalty = contact_penalty_ != 0;
+  // the penalty walks each local atom's pairs: with newton on a pair with a ghost is listed by one
+  // process only, so a local atom's list can miss an overlapping partner
+  if (contact_penalty_ && force->newton_pair)
+    error->all(FLERR,
+               "Pair {} contact_penalty on requires newton off (newton_pair is on): each atom's "
+               "overlapping partners must all be in its process's neighbour list, as for LAMMPS's granular mdr",
+               style_);
   if (friction_ == 1) {  // MdrFriction::authors: one k_t for every pair
     choices.kt = kt_[0];
     for (int t = 0; t < atom->ntypes; t++)
@@ -594,6 +607,7 @@ void PairEpac::compute(int eflag, int vflag) {
   gather_atoms(nall);
   if (list != last_list_ || neighbor->lastcall != last_build_) {
     build_contacts();
+    ++list_stamp_;
     last_list_ = list;
     last_build_ = neighbor->lastcall;
   }
@@ -613,6 +627,7 @@ void PairEpac::compute(int eflag, int vflag) {
   const bool have_walls = !wall_fixes_.empty();
   if (have_walls) collect_walls();
   const epac::lammps::WallPass* wp = have_walls ? &walls_ : nullptr;
+  engine_->prepare_pass(contacts_, nlocal, list_stamp_);
   if (vflag_either) {
     epac::ContactForceBuffer<double, epac::DefaultDevice> buf(n);
     engine_->compute(contacts_, h, dt, buf, wp);
@@ -703,15 +718,15 @@ void PairEpac::read_restart(FILE* fp) {
 }
 
 void PairEpac::write_restart_settings(FILE* fp) {
-  const int v[8] = {pair_split_,  delta_max_,    damping_,         friction_,
-                    yield_onset_, energy_share_, adhesive_radius_, release_};
-  fwrite(v, sizeof(int), 8, fp);
+  const int v[9] = {pair_split_,   delta_max_,       damping_, friction_,       yield_onset_,
+                    energy_share_, adhesive_radius_, release_, contact_penalty_};
+  fwrite(v, sizeof(int), 9, fp);
 }
 
 void PairEpac::read_restart_settings(FILE* fp) {
-  int v[8] = {0, 0, 0, 0, 0, 0, 0, 0};
-  if (comm->me == 0) utils::sfread(FLERR, v, sizeof(int), 8, fp, nullptr, error);
-  MPI_Bcast(v, 8, MPI_INT, 0, world);
+  int v[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
+  if (comm->me == 0) utils::sfread(FLERR, v, sizeof(int), 9, fp, nullptr, error);
+  MPI_Bcast(v, 9, MPI_INT, 0, world);
   pair_split_ = v[0];
   delta_max_ = v[1];
   damping_ = v[2];
@@ -720,6 +735,7 @@ void PairEpac::read_restart_settings(FILE* fp) {
   energy_share_ = v[5];
   adhesive_radius_ = v[6];
   release_ = v[7];
+  contact_penalty_ = v[8];
 }
 
 double PairEpac::memory_usage() {

@@ -52,15 +52,17 @@ class PairEpac : public Pair {
   std::unique_ptr<epac::lammps::ContactEngine> engine_;
   FixNeighHistory* fix_history_ = nullptr;
   int history_size_ = 0;
-  int pair_split_ = 0;       // pair_style epac/mdr pair_split: epac::MdrPairSplit
-  int delta_max_ = 0;        // pair_style epac/mdr delta_max: epac::MdrDeltaMax
-  int damping_ = 0;          // pair_style epac/mdr damping: epac::MdrDamping
-  int friction_ = 0;         // pair_style epac/mdr friction: epac::MdrFriction
-  int yield_onset_ = 0;      // pair_style epac/mdr yield_onset: epac::MdrYieldOnset
-  int energy_share_ = 0;     // pair_style epac/mdr surface_energy_share: epac::MdrSurfaceEnergyShare
-  int adhesive_radius_ = 0;  // pair_style epac/mdr adhesive_radius: epac::MdrAdhesiveRadius
-  int release_ = 0;          // pair_style epac/mdr release: epac::MdrRelease
-  std::vector<double> kt_;   // per type: pair_coeff keyword kt (MdrFriction::authors' k_t)
+  int pair_split_ = 0;           // pair_style epac/mdr pair_split: epac::MdrPairSplit
+  int delta_max_ = 0;            // pair_style epac/mdr delta_max: epac::MdrDeltaMax
+  int damping_ = 0;              // pair_style epac/mdr damping: epac::MdrDamping
+  int friction_ = 0;             // pair_style epac/mdr friction: epac::MdrFriction
+  int yield_onset_ = 0;          // pair_style epac/mdr yield_onset: epac::MdrYieldOnset
+  int energy_share_ = 0;         // pair_style epac/mdr surface_energy_share: epac::MdrSurfaceEnergyShare
+  int adhesive_radius_ = 0;      // pair_style epac/mdr adhesive_radius: epac::MdrAdhesiveRadius
+  int release_ = 0;              // pair_style epac/mdr release: epac::MdrRelease
+  int contact_penalty_ = 0;      // pair_style epac/mdr contact_penalty off|on: MdrOptions::contact_penalty
+  std::int64_t list_stamp_ = 0;  // counts build_contacts() (the contact penalty's index follows it)
+  std::vector<double> kt_;       // per type: pair_coeff keyword kt (MdrFriction::authors' k_t)
   // fix epac/wall: their contacts are evaluated in this pass; the engine's materials then end with
   // one rigid copy per wall fix and type (index ntypes + f ntypes + type - 1) for the wall side
   std::vector<FixEpacWall*> wall_fixes_;

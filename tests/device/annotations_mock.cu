@@ -14,6 +14,7 @@
 #include <epac/core/root_solve.hpp>
 #include <epac/core/vec3.hpp>
 #include <epac/models/mdr/detail/mdr_adhesion.hpp>
+#include <epac/models/mdr/mdr_contact_penalty.hpp>
 #include <epac/models/mdr/mdr_parameters.hpp>
 #include <epac/models/rolling_resistance.hpp>
 #include <epac/state/contact_history.hpp>
@@ -32,6 +33,8 @@ __global__ void device_paths(T* out, T* row) {
   // rolling resistance's spring-dashpot-slider (every law's kRolling)
   const epac::RollingPair<T> rp{T(1e3), T(1e-3), T(0.1)};
   out[3] = epac::rolling_sds_force(rp, b, a, T(1), T(1e-6), h).x;
+  // MDR's contact penalty: a triangle's term and the longest-side order
+  out[4] = epac::mdr_penalty_shorter(T(1), 3u, T(2), 5u) ? epac::mdr_penalty_term(T(2)) : T(0);
 }
 
 int main() {

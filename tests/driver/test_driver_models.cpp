@@ -12,7 +12,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <string>
+#include <utility>
 
 using namespace epac;
 using namespace epac::driver;
@@ -253,6 +255,41 @@ TEST_CASE("adhesive models: the skin must exceed the adhesive range", "[driver][
   CHECK(big.run.skin == Approx(1.25 * delta_c).epsilon(1e-9));
 }
 
+TEST_CASE("mdr in the driver: contact_penalty = \"on\" weights a contact through a third particle",
+          "[driver][models][mdr][penalty]") {
+  // a and b (R = 1 mm) 1.98 mm apart, c (0.42 mm) between them at alpha = pi/2 (w = 1/2 exactly on
+  // ab; models/mdr/mdr_contact_penalty.hpp); all driven at rest: step 0's forces in contacts.csv
+  auto scene = [](const std::string& penalty) {
+    return std::string(
+               "[materials.ball]\nyoungs_modulus = 1e8\npoisson_ratio = 0.3\nyield_stress = 2e6\n"
+               "density = 1000\n[model]\nname = \"mdr\"\n") +
+           penalty +
+           "\n[particles]\nallow_overlap = true\n[[particles.list]]\nposition = [0, 0, 0]\nradius = 1e-3\nmaterial = "
+           "\"ball\"\ndriven = true\n"
+           "[[particles.list]]\nposition = [1.98e-3, 0, 0]\nradius = 1e-3\nmaterial = \"ball\"\ndriven = true\n"
+           "[[particles.list]]\nposition = [0.99e-3, 0.99e-3, 0]\nradius = 0.42e-3\nmaterial = \"ball\"\n"
+           "driven = true\n[run]\ndt = 1e-7\nsteps = 1\noutput_interval = 1\ncontact_output = true\n";
+  };
+  std::map<std::pair<int, int>, double> force[2];
+  for (int on = 0; on < 2; ++on) {
+    const fs::path dir = fresh_out_dir("mdr_penalty");
+    run_scene_text(scene(on ? "contact_penalty = \"on\"" : ""), dir);
+    const auto c = read_csv_columns(dir / "contacts.csv");
+    for (std::size_t k = 0; k < c.at("i").size(); ++k)
+      if (c.at("step")[k] == 0.0) {
+        const int i = int(c.at("i")[k]), j = int(c.at("j")[k]);
+        force[on][{std::min(i, j), std::max(i, j)}] = c.at("force")[k];
+      }
+    fs::remove_all(dir);
+  }
+  REQUIRE(force[0].size() == 3);
+  REQUIRE(force[1].size() == 3);
+  CHECK(force[0].at({0, 1}) > 0.0);
+  CHECK(force[1].at({0, 1}) == Approx(0.5 * force[0].at({0, 1})).epsilon(1e-12));
+  CHECK(force[1].at({0, 2}) == force[0].at({0, 2}));
+  CHECK(force[1].at({1, 2}) == force[0].at({1, 2}));
+}
+
 TEST_CASE("model keys are range-checked on parse", "[driver][models][scene]") {
   const std::string mat = "youngs_modulus = 1e8\npoisson_ratio = 0.3\nyield_stress = 2e6";
   auto message = [&](const std::string& model_block) {
@@ -271,6 +308,9 @@ TEST_CASE("model keys are range-checked on parse", "[driver][models][scene]") {
       0);
   CHECK(message("name = \"mdr\"\ngrowth_rule = 1").find("model.growth_rule must be a string") == 0);
   CHECK(message("name = \"mdr\"\nradius_cap = 0.5").find("model.radius_cap = 0.5 is outside") == 0);
+  CHECK(message("name = \"mdr\"\ncontact_penalty = \"on\"") == "accepted");
+  CHECK(message("name = \"mdr\"\ncontact_penalty = \"yes\"")
+            .find("model.contact_penalty = \"yes\" is not valid (valid: \"off\", \"on\")") == 0);
   CHECK(
       message("name = \"mdr\"\neffects = [\"radius_growth\"]").find("model.effects: radius_growth needs plasticity") ==
       0);

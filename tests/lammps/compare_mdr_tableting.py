@@ -37,6 +37,11 @@ Printed: D per phase, epac against LAMMPS with its contact penalty, and the lowe
 the end, where epac stays systematically below LAMMPS (0.20 N against 0.33-0.35 N: the ejected
 tablet's grip on the die; cause not found, see drivers/lammps/README.md).
 
+--variant penalty_rolling keeps the shipped input's rolling resistance and LAMMPS's contact
+penalty (only psi_b 0 remains: Part II is not in epac): the reference and the ensemble are LAMMPS
+as shipped but for psi_b (no preload), and epac adds contact_penalty on and pair_coeff's rolling sds
+(fix epac/wall takes the type's rolling coefficients, as the input gives the walls the same ones).
+
   python3 tests/lammps/compare_mdr_tableting.py --plugin build/drivers/lammps/epacplugin.so \
       --lammps-src ~/.cache/epac/lammps/4Feb2025/src/lammps-4Feb2025/src
 """
@@ -59,11 +64,13 @@ def sub(text, pattern, repl, count, what):
     return out
 
 
-def common(shipped, nudge_atom=0, radius=None):
-    """The shipped input with psi_b 0, no rolling, no dumps; nudge_atom > 0 moves that atom by 1e-9 R."""
+def common(shipped, nudge_atom=0, radius=None, rolling=False):
+    """The shipped input with psi_b 0, no rolling (unless rolling), no dumps; nudge_atom > 0 moves that
+    atom by 1e-9 R."""
     s = re.sub(r"^dump", "#dump", shipped, flags=re.M)
     s = sub(s, r"^variable psi_b\s+equal .*$", "variable psi_b equal 0.0", 1, "psi_b")
-    s = sub(s, r" rolling sds \$\{k_roll\} \$\{gamma_roll\} \$\{mu_roll\}", "", 2, "rolling sds")
+    if not rolling:
+        s = sub(s, r" rolling sds \$\{k_roll\} \$\{gamma_roll\} \$\{mu_roll\}", "", 2, "rolling sds")
     if nudge_atom:
         s = sub(s, r"^(read_data spheres200.data)$",
                 rf"\1\ngroup epac_nudge id {nudge_atom}\ndisplace_atoms epac_nudge move {1e-9 * radius:.6e} 0 0 units box",
@@ -71,14 +78,16 @@ def common(shipped, nudge_atom=0, radius=None):
     return s
 
 
-def epac_input(shipped, plugin):
-    s = common(shipped)
-    opts = " ".join(f"{k} {v}" for k, v in AUTHORS.items())
+def epac_input(shipped, plugin, rolling=False):
+    s = common(shipped)  # (rolling: added below in epac's pair_coeff form)
+    choices = dict(AUTHORS, contact_penalty="on") if rolling else AUTHORS
+    opts = " ".join(f"{k} {v}" for k, v in choices.items())
     s = sub(s, r"^pair_style granular$", f"plugin load {plugin}\npair_style epac/mdr {opts}\nfix epac_growth all epac/mdr",
             1, "pair_style")
     s = sub(s, r"^pair_coeff \* \* mdr \$\{YoungsModulus\} \$\{PoissonsRatio\} \$\{YieldStress\} \$\{SurfaceEnergy\} "
                r"\$\{psi_b\} \$\{CoR\} tangential linear_history \$\{kt\} \$\{xgammat\} \$\{mu_s\} damping none$",
-            "pair_coeff * * ${YoungsModulus} ${PoissonsRatio} ${YieldStress} ${SurfaceEnergy} 0 ${CoR} mu ${mu_s} kt ${kt}",
+            "pair_coeff * * ${YoungsModulus} ${PoissonsRatio} ${YieldStress} ${SurfaceEnergy} 0 ${CoR} mu ${mu_s} kt ${kt}" +
+            (" rolling sds ${k_roll} ${gamma_roll} ${mu_roll}" if rolling else ""),
             1, "pair_coeff")
     # the walls' k_t is the particles' (kt_wall = kt in the input): one k_t for every contact
     if not re.search(r"^variable kt_wall\s+equal 2/7\*\$\{YoungsModulus\}\*\$\{atomRadius\}$", s, flags=re.M):
@@ -119,21 +128,27 @@ def main():
     ap.add_argument("--lammps-src", required=True, help="LAMMPS's src folder (the no-penalty diagnostic)")
     ap.add_argument("--members", type=int, default=6, help="perturbed LAMMPS runs in the ensemble")
     ap.add_argument("--factor", type=float, default=1.5)
+    ap.add_argument("--variant", choices=("part1", "penalty_rolling"), default="part1")
     args = ap.parse_args()
+    rolling = args.variant == "penalty_rolling"
     shipped = prepare(args, INPUT, "epac_tableting_")
     m = re.search(r"^variable atomRadius\s+equal\s+(\S+)\*(\S+)$", shipped, flags=re.M)
     if not m:
         sys.exit(f"{INPUT}: no 'variable atomRadius equal A*B' line")
     radius = float(m.group(1)) * float(m.group(2))
-    nopen = build_no_penalty(args)
-    ref = run(args, "lammps", common(shipped), preload=nopen)
-    members = [run(args, f"lammps_nudge{k}", common(shipped, k, radius), preload=nopen)
+    nopen = None if rolling else build_no_penalty(args)
+    ref = run(args, "lammps", common(shipped, rolling=rolling), preload=nopen)
+    members = [run(args, f"lammps_nudge{k}", common(shipped, k, radius, rolling), preload=nopen)
                for k in range(1, args.members + 1)]
-    with_penalty = run(args, "lammps_with_penalty", common(shipped))
-    epac = run(args, "epac", epac_input(shipped, args.plugin))
-    if any(len(r) != len(ref) for r in members + [epac, with_penalty]):
+    # the other LAMMPS run printed: with the penalty (part1), without rolling (penalty_rolling)
+    other = run(args, "lammps_other", common(shipped))
+    epac = run(args, "epac", epac_input(shipped, args.plugin, rolling))
+    if any(len(r) != len(ref) for r in members + [epac, other]):
         sys.exit("runs printed different numbers of steps")
-    print(f"{INPUT} (psi_b 0, no rolling), reference: LAMMPS without its contact penalty; D = max |F - F_ref| / "
+    other_name = "LAMMPS without rolling (with its penalty)" if rolling else "LAMMPS with its contact penalty"
+    what = ("psi_b 0, rolling sds and the contact penalty in both" if rolling else
+            "psi_b 0, no rolling), reference: LAMMPS without its contact penalty")
+    print(f"{INPUT} ({what}; D = max |F - F_ref| / "
           f"peak |F_ref|; ensemble: {args.members} runs with one atom moved by 1e-9 R ({1e-9 * radius:.1e} m)")
     ok = True
     for col, punch in PUNCHES:
@@ -147,8 +162,8 @@ def main():
         per_phase = [(name, deviation(ref, epac, col, a, b), max(deviation(ref, m, col, a, b) for m in members))
                      for name, a, b in phases(len(ref)) if a < b]
         print("    per phase, epac / ensemble max: " + ", ".join(f"{n} {x:.3f} / {y:.3f}" for n, x, y in per_phase))
-        print(f"    LAMMPS with its contact penalty against the reference: D = {deviation(ref, with_penalty, col):.3f}; "
-              f"epac against LAMMPS with the penalty: D = {deviation(with_penalty, epac, col):.3f}")
+        print(f"    {other_name} against the reference: D = {deviation(ref, other, col):.3f}; "
+              f"epac against it: D = {deviation(other, epac, col):.3f}")
     # the compaction force: the peak of the upper punch force (the punch pushes down: F < 0)
     peak = lambda rows: max(-r[1] for r in rows)
     p_ref, p_epac = peak(ref), peak(epac)
@@ -158,10 +173,11 @@ def main():
     ok = ok and flag
     print(f"  peak upper punch force [N]: LAMMPS {p_ref:.4f}, ensemble {min(ens_peaks):.4f}-{max(ens_peaks):.4f}, epac "
           f"{p_epac:.4f} (|epac - LAMMPS| {abs(p_epac - p_ref):.4f} <= {args.factor} x {spread:.4f}: "
-          f"{'ok' if flag else 'FAIL'}); LAMMPS with its penalty {peak(with_penalty):.4f}")
+          f"{'ok' if flag else 'FAIL'}); {other_name} {peak(other):.4f}")
     # printed: the lower punch force at the end (ejected tablet held by die friction)
     print(f"  lower punch force at the end [N]: LAMMPS {ref[-1][2]:.4f}, ensemble "
-          f"{min(m[-1][2] for m in members):.4f}-{max(m[-1][2] for m in members):.4f}, epac {epac[-1][2]:.4f}")
+          f"{min(m[-1][2] for m in members):.4f}-{max(m[-1][2] for m in members):.4f}, epac {epac[-1][2]:.4f}; "
+          f"{other_name} {other[-1][2]:.4f}")
     print("PASS" if ok else "FAIL")
     return 0 if ok else 1
 

@@ -10,6 +10,8 @@ and what epac needs:
 
   lammps:       the input as shipped, plus a print of the smallest psi (Part II's free-area ratio);
   lammps_psi0:  the same with psi_b 0 (Part II's bulk response never triggers);
+  epac_penalty: as epac below, with contact_penalty on (LAMMPS's MDR contact penalty, which
+                granular mdr always applies);
   epac:         plugin load epacplugin.so; pair_style epac/mdr with the authors' choices (pair_split
                 geometric delta_max running_max damping authors friction authors yield_onset
                 hertz_40 surface_energy_share each_side_full adhesive_radius authors release
@@ -19,20 +21,20 @@ and what epac needs:
                 particle pair 1-12 (compute pair/local p13, granular only) removed.
 
 Checks, each wall force relative to the peak of the LAMMPS curve:
-  1. the shipped input against epac up to the step before Part II's bulk response triggers (the
-     first step with psi < psi_b on any particle, wall displacement 0.424 of 0.499): within --tol
-     of the peak of the example's curve (its whole run); the deviation relative to the peak
-     before the bulk response is printed too;
-  2. psi_b 0 against epac over the whole run: within --tol.
-With --lammps-src (LAMMPS's src folder) a third check finds where the remaining difference comes
-from: LAMMPS's MDR carries, besides Part II's bulk response, a contact penalty from later work (fix
-granular/mdr's calculate_contact_penalty: a pair's force is scaled down when a third particle
-touching both sits between them), which epac does not implement. The script compiles a small
-library that replaces that function by a no-op and reruns lammps_psi0 with it preloaded
-(LD_PRELOAD; a diagnostic, not a LAMMPS option):
-  3. psi_b 0 without the penalty against epac over the whole run: within --tol-no-penalty.
---ranks 2 also runs epac on 2 MPI ranks (fix epac/wall's per-atom history migrates with the
-atoms) and requires the printed forces to agree with 1 rank to 1e-10 of the peak.
+  1. the shipped input against epac_penalty up to the step before Part II's bulk response
+     triggers (the first step with psi < psi_b on any particle, wall displacement 0.424 of 0.499):
+     within --tol of the peak of the example's curve (its whole run); the deviation relative to
+     the peak before the bulk response is printed too;
+  2. psi_b 0 against epac_penalty over the whole run: within --tol-penalty (the contact penalty,
+     mdr_contact_penalty.hpp, validated: both codes apply it);
+  psi_b 0 against epac without the penalty is printed (what the penalty moves).
+With --lammps-src (LAMMPS's src folder) a third check takes the penalty out of both codes: the
+script compiles a small library that replaces fix granular/mdr's calculate_contact_penalty by a
+no-op and reruns lammps_psi0 with it preloaded (LD_PRELOAD; a diagnostic, not a LAMMPS option):
+  3. psi_b 0 without the penalty against epac without it over the whole run: within --tol-no-penalty.
+--ranks 2 also runs epac_penalty on 2 MPI ranks (fix epac/wall's per-atom history migrates with
+the atoms; the penalty walks each local atom's pairs, ghosts included) and requires the printed
+forces to agree with 1 rank to 1e-10 of the peak.
 --sensitivity reruns epac with each of the authors' choices back at epac's default and prints how
 far each moves the curves (why each convention is needed); no check.
 
@@ -123,6 +125,7 @@ def main():
     ap.add_argument("--tol", type=float, default=0.01)
     ap.add_argument("--lammps-src", default=None, help="LAMMPS's src folder: adds check 3 (no contact penalty)")
     ap.add_argument("--tol-no-penalty", type=float, default=1e-3)
+    ap.add_argument("--tol-penalty", type=float, default=1e-3)
     ap.add_argument("--ranks", type=int, default=1)
     ap.add_argument("--sensitivity", action="store_true")
     args = ap.parse_args()
@@ -131,6 +134,8 @@ def main():
     lmp_rows, psi = run(args, "lammps", lammps_input(shipped, None))
     psi0_rows, _ = run(args, "lammps_psi0", lammps_input(shipped, 0.0))
     epac_rows, _ = run(args, "epac", epac_input(shipped, args.plugin, AUTHORS))
+    with_penalty = dict(AUTHORS, contact_penalty="on")
+    pen_rows, _ = run(args, "epac_penalty", epac_input(shipped, args.plugin, with_penalty))
     psi_b = float(re.search(r"^variable psi_b\s+equal\s+(\S+)", shipped, flags=re.M).group(1))
     onset = next((k for k, r in enumerate(psi) if r[1] < psi_b), len(psi))
     # psi.csv and walls.csv print the same steps (fix print every step, defined in that order)
@@ -142,14 +147,16 @@ def main():
     # check 1 against the peak of the shipped run's curve (the example's peak force); printed also
     # against the peak over the compared range
     whole_peak = compare(lmp_rows, lmp_rows, len(lmp_rows))
-    checks = [("shipped input, before bulk response", lmp_rows, onset, args.tol, [p for _, _, p in whole_peak]),
-              ("psi_b 0, whole run", psi0_rows, len(psi0_rows), args.tol, None)]
+    checks = [("shipped input, before bulk response", lmp_rows, onset, args.tol, [p for _, _, p in whole_peak],
+               pen_rows),
+              ("psi_b 0, whole run", psi0_rows, len(psi0_rows), args.tol_penalty, None, pen_rows)]
     if args.lammps_src:
         lib = build_no_penalty(args)
         nopen_rows, _ = run(args, "lammps_psi0_no_penalty", lammps_input(shipped, 0.0), preload=lib)
-        checks.append(("psi_b 0, no contact penalty, whole run", nopen_rows, len(nopen_rows), args.tol_no_penalty, None))
-    for name, ref, upto, tol, peaks in checks:
-        res = compare(ref, epac_rows, upto)
+        checks.append(("psi_b 0, no contact penalty, whole run", nopen_rows, len(nopen_rows), args.tol_no_penalty, None,
+                       epac_rows))
+    for name, ref, upto, tol, peaks, epac in checks:
+        res = compare(ref, epac, upto)
         for k, (wall, (rel, at, peak)) in enumerate(zip(WALLS, res)):
             extra = ""
             if peaks:  # relative to the whole curve's peak; the range's own peak in the note
@@ -159,15 +166,19 @@ def main():
             ok = ok and rel <= tol
             print(f"  {name:38s} wall {wall}: max |dF| / peak = {rel:.3e} (at displacement {at:.5f}, "
                   f"peak {peak:.4e} N{extra})  [{flag}, tol {tol}]")
+    unpen = compare(psi0_rows, epac_rows, len(psi0_rows))
+    print("  for scale: psi_b 0 against epac without the contact penalty, whole run: " +
+          ", ".join(f"{w} {r:.3e}" for w, (r, _, _) in zip(WALLS, unpen)))
     full = compare(lmp_rows, psi0_rows, len(lmp_rows))
     print("  for scale: the shipped input against psi_b 0 (what Part II's bulk response adds), whole run: " +
           ", ".join(f"{w} {r:.3f}" for w, (r, _, _) in zip(WALLS, full)))
 
     if args.ranks > 1:
-        two, _ = run(args, f"epac_{args.ranks}ranks", epac_input(shipped, args.plugin, AUTHORS), ranks=args.ranks)
-        res = compare(epac_rows, two, len(epac_rows))
+        two, _ = run(args, f"epac_penalty_{args.ranks}ranks", epac_input(shipped, args.plugin, with_penalty),
+                     ranks=args.ranks)
+        res = compare(pen_rows, two, len(pen_rows))
         worst = max(r for r, _, _ in res)
-        flag = "ok" if worst <= 1e-10 and len(two) == len(epac_rows) else "FAIL"
+        flag = "ok" if worst <= 1e-10 and len(two) == len(pen_rows) else "FAIL"
         ok = ok and flag == "ok"
         print(f"  epac 1 against {args.ranks} ranks: max |dF| / peak = {worst:.3e}  [{flag}, tol 1e-10]")
 

@@ -1,7 +1,7 @@
 // mdr in the driver (Zunker & Kamrin Part I, kernels/epac/models/mdr/): factory, dispatch and
 // scene check.
 // [model] keys: xi (1 or 3), growth_rule, yield_onset, pair_split, delta_max, damping, friction,
-// tangential_stiffness, surface_energy_share, adhesive_radius, release, radius_cap, denominator_floor, volume_floor (MdrOptions, mdr_parameters.hpp). Effects: adhesion (surface_energy > 0),
+// tangential_stiffness, surface_energy_share, adhesive_radius, release, contact_penalty, radius_cap, denominator_floor, volume_floor (MdrOptions, mdr_parameters.hpp). Effects: adhesion (surface_energy > 0),
 // plasticity (finite yield_stress), radius growth (on with plasticity unless [model] effects
 // says otherwise), damping, friction.
 // Per step: the force pass adds each side's growth terms to the particle sums; after_forces
@@ -43,6 +43,7 @@ MdrOptions mdr_options(const Scene& s) {
   o.radius_cap = s.model.params.at("radius_cap");
   o.denominator_floor = s.model.params.at("denominator_floor");
   o.volume_floor = s.model.params.at("volume_floor");
+  o.contact_penalty = choice_of(s, "contact_penalty") == 1;
   o.validate();
   return o;
 }
@@ -52,6 +53,12 @@ struct MdrFactory : ModelFactoryBase<Mdr<T, Effects<Bits>, Device>> {
   using model_type = Mdr<T, Effects<Bits>, Device>;
   static model_type create(const Scene& s) { return model_type::create(s.materials, mdr_options(s)); }
   static void bind(model_type& m, const Particles<T, Device>& p) { m.bind(p); }
+  // [model] contact_penalty = "on": the pair contacts' weights from this step's positions (the
+  // per-particle index of the list only after a rebuild).
+  static void before_forces(model_type& m, const Particles<T, Device>& p, const ContactList<Device>& pairs,
+                            std::int64_t builds, T) {
+    m.compute_contact_penalty(p, pairs, -1, builds);
+  }
   // MDR (37)-(39): the apparent radii and volumes from this pass's sums (docs/design.md section 4 step 4).
   static void after_forces(const model_type& m, const Particles<T, Device>&, T) { m.update_radii(); }
   // [run] spatial_sort: the growth state is per particle (R, R_o are the particles' views).

@@ -40,6 +40,9 @@
 //   every force pass (docs/design.md section 4 step 4); update_radii also clears the copies for the
 //   next pass, so no begin call is needed. Deterministic mode (compute/deterministic_pass.hpp):
 //   the terms are stored per contact side (growth_terms) and added per particle in key order.
+// - Contact penalty (MdrOptions::contact_penalty, off by default; mdr_contact_penalty.hpp): a pair
+//   contact's MDR force, its damping and its growth terms are multiplied by the weight w that
+//   compute_contact_penalty(particles, pairs) computed before the pass, as in LAMMPS's MDR.
 #include <epac/compute/contact_side_sums.hpp>
 #include <epac/models/contact_conventions.hpp>
 #include <epac/models/contact_geometry.hpp>
@@ -51,6 +54,7 @@
 #include <epac/models/mdr/detail/mdr_pair_equal.hpp>
 #include <epac/models/mdr/detail/mdr_pair_split.hpp>
 #include <epac/models/mdr/detail/mdr_side_force.hpp>
+#include <epac/models/mdr/mdr_contact_penalty.hpp>
 #include <epac/models/mdr/mdr_history_layout.hpp>
 #include <epac/models/mdr/mdr_parameters.hpp>
 #include <epac/models/mdr/mdr_radius_growth.hpp>
@@ -115,6 +119,7 @@ struct Mdr {
   T adhesive_radius_factor = T(1);       // MdrOptions::adhesive_radius: 1 (paper) or 0.99 (authors)
   bool release_at_zero_overlap = false;  // MdrOptions::release == zero_overlap
   MdrGrowthState<T, Device> growth;      // bound by bind() when Eff::radius_growth
+  MdrContactPenalty<T, Device> penalty;  // weights of the pair contacts (MdrOptions::contact_penalty)
   // Deterministic mode: the growth terms (columns of growth.sums) per contact side, enabled by
   // begin_deterministic_pass; side 0 of a pair is the particle with the smaller global id.
   ContactSideSums<T, 3, Device> growth_terms;
@@ -184,12 +189,18 @@ struct Mdr {
     else
       wall_side(pc, e);
 
-    const SideSums sum = finish_sides<Write>(g, row, pc, grows, e, o);
+    // the contact penalty's weight (1 for walls, and without the option: one branch)
+    const T w = e.is_pair ? penalty.weight_of(g.contact) : T(1);
+    const SideSums sum = finish_sides<Write>(g, row, pc, grows, w, e, o);
     // every side separated at a gap this step: released now, not at the next evaluation
     if (Eff::adhesion && !(g.delta > T(0)) && sum.a_adh == T(0)) return released<Write>(g, row, nf_out);
     const T inv = e.is_pair ? T(0.5) : T(1);  // 1 / nsides
     contact_means(o, sum, inv, e.is_pair);
-    if (nf_out) *nf_out = normal_force(g, pc, o.force, sum.a, inv);
+    o.force *= w;
+    if (nf_out) {
+      *nf_out = normal_force(g, pc, o.force, sum.a, inv);
+      nf_out->damping *= w;  // LAMMPS: F += w F_damp
+    }
     return o;
   }
 
@@ -307,7 +318,23 @@ struct Mdr {
     m.growth.denominator_floor = T(opt.denominator_floor);
     m.growth.volume_floor = T(opt.volume_floor);
     m.rolling = RollingTable<T, Device, Eff::rolling>::create(materials);
+    m.penalty.on = opt.contact_penalty;
     return m;
+  }
+
+  // Contact penalty (MdrOptions::contact_penalty; a no-op without it): the weights of `pairs` for
+  // the next force pass, from the positions and radii now; call it before every force pass on
+  // that list. list_stamp: any number that changes whenever the list does (a rebuild count): the
+  // per-particle index of the list is rebuilt only then (-1: always). nlocal: hosts with ghost
+  // copies past nlocal (LAMMPS), else -1.
+  void compute_contact_penalty(const Particles<T, Device>& p, const ContactList<Device>& pairs, int nlocal = -1,
+                               std::int64_t list_stamp = -1) {
+    if (!penalty.on) return;
+    if (list_stamp < 0 || list_stamp != penalty.indexed_stamp) {
+      penalty.index(pairs, p.n);
+      penalty.indexed_stamp = list_stamp;
+    }
+    penalty.weigh(p, pairs, nlocal);
   }
 
   // Attaches the particles' R_o and R and allocates V and the growth sums (radius growth only).
@@ -559,12 +586,12 @@ struct Mdr {
   // Per side: the outputs and sums, then (Write) the growth terms and the changed history.
   template <bool Write>
   KOKKOS_FORCEINLINE_FUNCTION SideSums finish_sides(const ContactGeometry<T>& g, const HistoryRow<T, Device>& row,
-                                                    const MdrPairConstants<T>& pc, bool grows,
+                                                    const MdrPairConstants<T>& pc, bool grows, T w,
                                                     detail::MdrEvaluation<T>& e, MdrContactOutput<T>& o) const {
     SideSums sum;
     for (int s = 0; s < e.nsides; ++s) {
       report_side(o, sum, e, s);
-      if (Write) commit_side(g, row, pc, grows, e, s);
+      if (Write) commit_side(g, row, pc, grows, w, e, s);
     }
     return sum;
   }
@@ -587,8 +614,8 @@ struct Mdr {
 
   // The side's growth terms (deterministic mode: its slot, s in global-id order) and history.
   KOKKOS_FORCEINLINE_FUNCTION void commit_side(const ContactGeometry<T>& g, const HistoryRow<T, Device>& row,
-                                               const MdrPairConstants<T>& pc, bool grows, detail::MdrEvaluation<T>& e,
-                                               int s) const {
+                                               const MdrPairConstants<T>& pc, bool grows, T w,
+                                               detail::MdrEvaluation<T>& e, int s) const {
     const MdrSideResult<T>& r = e.res[s];
     MdrSideState<T>& st = e.st[s];
     if (grows) {
@@ -598,10 +625,10 @@ struct Mdr {
       if (growth_terms.enabled)
         mdr_growth_add_side(growth, growth_terms.access(e.is_pair, g.contact, s), e.part[s], e.R0s[s], c.inv_3kappa,
                             r.F, e.dside[s], e.Rs[s], plastic_loading, r.plastic, st.delta_o_prev, st.eps_prev,
-                            e.R_cap[s]);
+                            e.R_cap[s], w);
       else
         mdr_growth_add_side(growth, growth.sums.scatter.access(), e.part[s], e.R0s[s], c.inv_3kappa, r.F, e.dside[s],
-                            e.Rs[s], plastic_loading, r.plastic, st.delta_o_prev, st.eps_prev, e.R_cap[s]);
+                            e.Rs[s], plastic_loading, r.plastic, st.delta_o_prev, st.eps_prev, e.R_cap[s], w);
     }
     store_changed(row, s, e.before[s], st, r.plastic);
   }

@@ -144,6 +144,11 @@ struct MdrOptions {
   MdrRelease release = MdrRelease::critical_overlap;
   // k_t [N/m] of MdrFriction::authors (the same for every pair); unused otherwise.
   double tangential_stiffness = 0.0;
+  // The contact penalty of LAMMPS's MDR (mdr_contact_penalty.hpp): a pair whose longest-side
+  // triangle with a third overlapping particle puts that particle between them is weighted down.
+  // Off by default: it is later work (Zunker et al. 2025), not MDR Part I. The host then calls
+  // Mdr::compute_contact_penalty before every force pass.
+  bool contact_penalty = false;
   // R never exceeds radius_cap * R_o (the authors' implementation stops growth at 1.5 R_o).
   double radius_cap = 1.5;
   // Guard of the denominator of MDR (37), D = 2 pi R sum(delta_o + R - R_o) - 4 pi R^2, which is

@@ -94,14 +94,17 @@ struct MdrGrowthState {
 // R_cap: the radius of the sphere whose cap the side cuts (default R; MdrPairSplit::equal_pair:
 // the side's equivalent radius R'_s, so that the cap is the particle's compliance share of the
 // pair's lens and its base the lens rim, detail/mdr_pair_equal.hpp), the same growth R - R_o.
+// weight: the contact penalty's w (mdr_contact_penalty.hpp; 1 without it): the force in eps_c is
+// the weighted one, and the cap terms of (37) count w times, as in LAMMPS's fix GRANULAR/MDR.
 template <class T, class Device, class Access>
 KOKKOS_FORCEINLINE_FUNCTION void mdr_growth_add_side(const MdrGrowthState<T, Device>& gs, const Access& acc, int p,
                                                      T R0, T inv_3kappa, T F, T delta, T R, bool plastic_loading,
-                                                     bool yielded, T& delta_o_prev, T& eps_prev, T R_cap = T(0)) {
+                                                     bool yielded, T& delta_o_prev, T& eps_prev, T R_cap = T(0),
+                                                     T weight = T(1)) {
   const T pi = constants<T>::pi;
   const T V = gs.volume(p);                // >= volume_floor V_o > 0 (update kernel guard)
   const T b = math::max(R - delta, T(0));  // branch length; >= 0 past the centre (guard)
-  const T eps = -F * b * inv_3kappa / V;
+  const T eps = -weight * F * b * inv_3kappa / V;
   acc(p, int(MdrGrowthState<T, Device>::kEps)) += eps;
   const T delta_o = delta - (R - R0);
   const bool contributes = gs.rule == MdrGrowthRule::plastic_loading ? plastic_loading : (yielded && delta > T(0));
@@ -109,13 +112,13 @@ KOKKOS_FORCEINLINE_FUNCTION void mdr_growth_add_side(const MdrGrowthState<T, Dev
     const T ddo = delta_o - delta_o_prev;
     // the cap's sphere: R (its R_o: R0), or R_cap (its R_o: R_cap - (R - R0))
     const T Rc = R_cap > T(0) ? R_cap : R, Rc0 = R_cap > T(0) ? R_cap - (R - R0) : R0;
-    T num = -pi * ddo * (T(2) * delta_o * Rc0 - delta_o * delta_o + Rc * Rc - Rc0 * Rc0);
+    T num = -weight * pi * ddo * (T(2) * delta_o * Rc0 - delta_o * delta_o + Rc * Rc - Rc0 * Rc0);
     if (gs.rule == MdrGrowthRule::plastic_loading) {
       const T V0 = T(4) / T(3) * pi * R0 * R0 * R0;
       num -= V0 * (eps - eps_prev);
     }
     acc(p, int(MdrGrowthState<T, Device>::kNumerator)) += num;
-    acc(p, int(MdrGrowthState<T, Device>::kDenominator)) += T(2) * pi * Rc * (delta_o + R - R0);
+    acc(p, int(MdrGrowthState<T, Device>::kDenominator)) += weight * T(2) * pi * Rc * (delta_o + R - R0);
   }
   delta_o_prev = delta_o;
   eps_prev = eps;
