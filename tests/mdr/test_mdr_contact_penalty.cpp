@@ -112,7 +112,9 @@ std::vector<double> brute_force(const Scene& s, const std::vector<std::array<int
     if (box > 0.0) v -= box * std::round(v / box);
     return v;
   };
-  auto dist = [&](int i, int j) { return std::sqrt(d(i, j, 0) * d(i, j, 0) + d(i, j, 1) * d(i, j, 1) + d(i, j, 2) * d(i, j, 2)); };
+  auto dist = [&](int i, int j) {
+    return std::sqrt(d(i, j, 0) * d(i, j, 0) + d(i, j, 1) * d(i, j, 1) + d(i, j, 2) * d(i, j, 2));
+  };
   auto key = [&](int i, int j) { return pair_key(10 + 3 * i, 10 + 3 * j); };
   std::vector<double> out;
   for (const auto& pr : pairs) {
@@ -237,8 +239,10 @@ TEMPLATE_LIST_TEST_CASE("contact penalty: a dense random cluster against brute f
     std::vector<std::array<int, 2>> pairs;
     for (int i = 0; i < n; ++i)
       for (int j = i + 1; j < n; ++j)
-        if ((i + j) % 5 != 0) pairs.push_back({i, j});  // some listed pairs are apart (a neighbour list)
-        else pairs.push_back({j, i});
+        if ((i + j) % 5 != 0)
+          pairs.push_back({i, j});  // some listed pairs are apart (a neighbour list)
+        else
+          pairs.push_back({j, i});
     const auto w = weights<double, D>(s, pairs, box);
     const auto ref = brute_force(s, pairs, box);
     int weighted = 0;

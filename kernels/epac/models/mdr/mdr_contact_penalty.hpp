@@ -78,8 +78,8 @@ struct MdrContactPenalty {
     }
     const int m = pairs.count;
     if (static_cast<int>(incident.extent(0)) < 2 * m)
-      incident =
-          Kokkos::View<int*, Device>(Kokkos::view_alloc(Kokkos::WithoutInitializing, "mdr.penalty.incident"), 2 * m + m / 2 + 16);
+      incident = Kokkos::View<int*, Device>(Kokkos::view_alloc(Kokkos::WithoutInitializing, "mdr.penalty.incident"),
+                                            2 * m + m / 2 + 16);
     auto off = offsets;
     auto cur = cursor;
     auto inc = incident;
@@ -124,22 +124,28 @@ struct MdrContactPenalty {
   };
 
   // The term of the triangle (lo, hi, c), or false when c does not overlap both ends or (lo, hi)
-  // is not the triangle's longest side (ties: the larger pair key) or two centres coincide.
-  static KOKKOS_INLINE_FUNCTION bool triangle_term(const Particles<T, Device>& p, const Side& ab, int c,
+  // is not the triangle's longest side (ties: the larger pair key) or two centres coincide. a: the
+  // walked end (lo or hi), tested first: most of its listed partners do not touch it.
+  static KOKKOS_INLINE_FUNCTION bool triangle_term(const Particles<T, Device>& p, const Side& ab, int a, int c,
                                                    typename Particles<T, Device>::position_type& term) {
     using P = typename Particles<T, Device>::position_type;
+    const bool a_lo = a == ab.lo;
     const P Rc = P(p.radius(c));
-    const Vec3<P> to_lo = direction(p, c, ab.lo), to_hi = direction(p, c, ab.hi);  // c -> lo, c -> hi
-    const P q_lo = dot(to_lo, to_lo), q_hi = dot(to_hi, to_hi);
-    const P s_lo = ab.R_lo + Rc, s_hi = ab.R_hi + Rc;
-    if (q_lo > s_lo * s_lo || q_hi > s_hi * s_hi) return false;  // apart from an end (no root taken)
-    const P r_lo = math::sqrt(q_lo), r_hi = math::sqrt(q_hi);
+    const Vec3<P> to_a = direction(p, c, a);
+    const P q_a = dot(to_a, to_a), s_a = (a_lo ? ab.R_lo : ab.R_hi) + Rc;
+    if (q_a > s_a * s_a) return false;  // apart from the walked end (no root taken)
+    const Vec3<P> to_b = direction(p, c, a_lo ? ab.hi : ab.lo);
+    const P q_b = dot(to_b, to_b), s_b = (a_lo ? ab.R_hi : ab.R_lo) + Rc;
+    if (q_b > s_b * s_b) return false;
+    // lengths in the order of the global ids (the same bits whichever end is walked)
+    const P r_lo = math::sqrt(a_lo ? q_a : q_b), r_hi = math::sqrt(a_lo ? q_b : q_a);
     const std::int64_t gc = p.gid(c);
     if (!mdr_penalty_shorter(r_lo, pair_key(p.gid(ab.lo), gc), ab.r, ab.key) ||
         !mdr_penalty_shorter(r_hi, pair_key(p.gid(ab.hi), gc), ab.r, ab.key))
       return false;
     if (!(r_lo > P(0)) || !(r_hi > P(0))) return false;  // no angle at c
-    term = mdr_penalty_term(math::acos_clamped(dot(to_lo, to_hi) / (r_lo * r_hi)));  // alpha at c
+    // alpha at c (each product of the dot is commutative: the same bits whichever end is a)
+    term = mdr_penalty_term(math::acos_clamped(dot(to_a, to_b) / (r_lo * r_hi)));
     return true;
   }
 
@@ -149,8 +155,7 @@ struct MdrContactPenalty {
     using exec = typename Device::execution_space;
     using P = typename Particles<T, Device>::position_type;
     const int m = pairs.count;
-    if (static_cast<int>(weight.extent(0)) < m)
-      weight = Kokkos::View<T*, Device>("mdr.penalty.weight", m + m / 4 + 16);
+    if (static_cast<int>(weight.extent(0)) < m) weight = Kokkos::View<T*, Device>("mdr.penalty.weight", m + m / 4 + 16);
     auto w = weight;
     auto off = offsets;
     auto inc = incident;
@@ -189,7 +194,7 @@ struct MdrContactPenalty {
             for (int s = off(a); s < off(a + 1); ++s) {
               const int c = inc(s);
               P term;
-              if (c == b || c == a || !triangle_term(p, ab, c, term)) continue;
+              if (c == b || c == a || !triangle_term(p, ab, a, c, term)) continue;
               if (n == kKept) {
                 overflow = true;
                 break;
@@ -220,7 +225,7 @@ struct MdrContactPenalty {
                 if (started && (gc < last_g || (gc == last_g && c <= last_i))) continue;
                 if (found && (gc > best_g || (gc == best_g && c >= best_i))) continue;
                 P term;
-                if (!triangle_term(p, ab, c, term)) continue;
+                if (!triangle_term(p, ab, a, c, term)) continue;
                 found = true;
                 best_g = gc;
                 best_i = c;
