@@ -10,8 +10,9 @@ struct Named {
   const char* name;
   unsigned bit;
 };
-constexpr Named kNames[] = {{"adhesion", kAdhesion}, {"plasticity", kPlasticity},      {"friction", kFriction},
-                            {"damping", kDamping},   {"radius_growth", kRadiusGrowth}, {"rolling", kRolling}};
+constexpr Named kNames[] = {{"adhesion", kAdhesion},         {"plasticity", kPlasticity},      {"friction", kFriction},
+                            {"damping", kDamping},           {"radius_growth", kRadiusGrowth}, {"rolling", kRolling},
+                            {"bulk_response", kBulkResponse}};
 }  // namespace
 
 std::string effect_names(unsigned bits) {

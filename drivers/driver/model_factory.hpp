@@ -40,10 +40,11 @@ struct ModelFactoryBase {
   // apparent-radius state to the particles' radii).
   template <class P>
   static void bind(Model&, const P&) {}
-  // Called before every force pass (after zero_forces), with the pair list the pass evaluates, its
-  // build count (changes whenever the list does) and the step's dt (0 for the first pass).
-  template <class P, class L, class T>
-  static void before_forces(const Model&, const P&, const L&, std::int64_t, T) {}
+  // Called before every force pass (after zero_forces), with the walls, the contact detector (its
+  // lists and histories as the pass evaluates them, and `builds`, which changes whenever the
+  // lists do) and the step's dt (0 for the first pass).
+  template <class P, class W, class Det, class T>
+  static void before_forces(const Model&, const P&, const W&, const Det&, T) {}
   // Called after every force pass, before the closing half kick (MDR particle update, design
   // section 4 step 4).
   template <class P, class T>

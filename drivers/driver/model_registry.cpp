@@ -17,7 +17,7 @@ const std::vector<ModelEntry>& model_registry() {
       // MDR (Zunker & Kamrin Part I), driver/models/mdr.cpp. Radius growth is on whenever
       // plasticity is (unless [model] effects says otherwise).
       {"mdr",
-       kAdhesion | kPlasticity | kFriction | kDamping | kRadiusGrowth | kRolling,
+       kAdhesion | kPlasticity | kFriction | kDamping | kRadiusGrowth | kRolling | kBulkResponse,
        0u,
        {{"xi", 1.0, Bound::closed, 3.0, Bound::closed, true, 1.0},  // MDR (15): 1 or 3 (checked)
         choice_key("growth_rule", {"plastic_loading", "yielded_contacts"}, 0),
@@ -33,7 +33,8 @@ const std::vector<ModelEntry>& model_registry() {
         {"tangential_stiffness", 0.0, Bound::closed, inf, Bound::open, true, 0.0},  // k_t [N/m] of friction "authors"
         {"radius_cap", 1.0, Bound::closed, 10.0, Bound::closed, true, 1.5},         // R <= cap R_o
         {"denominator_floor", 0.0, Bound::open, 1.0, Bound::open, true, 0.05},      // guard of (37)
-        {"volume_floor", 0.0, Bound::open, 1.0, Bound::open, true, 0.1}},           // V >= floor V_o
+        {"volume_floor", 0.0, Bound::open, 1.0, Bound::open, true, 0.1},            // V >= floor V_o
+        {"psi_b", 0.0, Bound::closed, 1.0, Bound::closed, true, 0.0}},              // Part II; > 0: bulk response
        &run_mdr,
        kRadiusGrowth,
        &mdr_scene_check},

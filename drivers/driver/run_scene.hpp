@@ -222,7 +222,7 @@ class SceneRun {
   // Phases (--phase-times): force (hooks, both lists, sums.end()), output (contacts.csv),
   // growth (after_forces).
   void force_pass(T step_dt, bool with_outputs, std::int64_t step) {
-    F::before_forces(model_, p_, det_.pairs, det_.builds, step_dt);
+    F::before_forces(model_, p_, walls_, det_, step_dt);
     if (with_outputs) size_outputs();
     if (!sums_.bound_to(p_)) sums_ = ForceSums<T, Device>(p_);
     const ContactOutputs<T, Device> none{};

@@ -668,6 +668,8 @@ void finish_scene(Scene& s) {
       s.model.notes.push_back("rolling resistance without sliding friction: the friction effect is on with mu = 0");
     }
     if (bits & kPlasticity) bits |= entry.implied_with_plasticity;
+    // MDR Part II: the bulk response is compiled in where the scene asks for it
+    if (s.model.name == "mdr" && s.model.params.at("psi_b") > 0.0) bits |= kBulkResponse;
     s.model.effects = bits & entry.supported_effects;
     const unsigned ignored = s.model.derived_effects & ~entry.supported_effects;
     if (ignored)

@@ -52,6 +52,37 @@ void prepare_model(Mdr<double, Eff>& m, const Particles<double>& p, const Contac
   m.compute_contact_penalty(p, pairs, nlocal, stamp);
 }
 
+// MDR Part II's bulk response (nothing for the other laws and for MDR without it)
+template <class Model>
+struct BulkOf {
+  static constexpr bool enabled = false;
+  static ContactEngine::BulkViews views(Model&) { return {}; }
+  static void mean_surface_displacement(const Model&, const Particles<double>&, const ContactList<>&,
+                                        const ContactHistory<double>&, const WallPass*, bool) {}
+};
+template <class Eff>
+struct BulkOf<Mdr<double, Eff>> {
+  static constexpr bool enabled = Eff::bulk_response;
+  static ContactEngine::BulkViews views(Mdr<double, Eff>& m) {
+    if (!m.bulk.bound()) return {};
+    return {m.bulk.psi, m.bulk.vgeo, m.bulk.acon0, m.bulk.ddelta_bar};
+  }
+  static void mean_surface_displacement(const Mdr<double, Eff>& m, const Particles<double>& p,
+                                        const ContactList<>& pairs, const ContactHistory<double>& history,
+                                        const WallPass* walls, bool advance) {
+    if (!(Eff::bulk_response && m.bulk.bound())) return;
+    if (!advance) {  // setup passes: no mean surface displacement (fix GRANULAR/MDR)
+      Kokkos::deep_copy(m.bulk.ddelta_bar, 0.0);
+      return;
+    }
+    if (walls && walls->list.count > 0)
+      m.compute_mean_surface_displacement(p, pairs, history, walls->walls, walls->list, walls->history);
+    else
+      m.compute_mean_surface_displacement(p, pairs, history, Walls<double>(), ContactList<>(0),
+                                          ContactHistory<double>(0, 0));
+  }
+};
+
 template <class Model>
 class EngineFor final : public ContactEngine {
  public:
@@ -96,6 +127,12 @@ class EngineFor final : public ContactEngine {
   bool radius_growth() const override { return GrowthOf<Model>::enabled; }
   Kokkos::View<double*, DefaultDevice> growth_volume() override { return GrowthOf<Model>::volume(model_); }
   void update_radii(int count) override { GrowthOf<Model>::update(model_, count); }
+  bool bulk_response() const override { return BulkOf<Model>::enabled; }
+  BulkViews bulk_views() override { return BulkOf<Model>::views(model_); }
+  void mean_surface_displacement(const ContactList<>& pairs, const ContactHistory<double>& history,
+                                 const WallPass* walls, bool advance) override {
+    BulkOf<Model>::mean_surface_displacement(model_, particles_, pairs, history, walls, advance);
+  }
   double radius_cap() const override { return GrowthOf<Model>::cap(model_); }
 
  private:
@@ -168,6 +205,8 @@ std::unique_ptr<ContactEngine> make_engine(Law law, const std::vector<Material>&
   mdr_opt.adhesive_radius = static_cast<MdrAdhesiveRadius>(mdr.adhesive_radius);
   mdr_opt.release = static_cast<MdrRelease>(mdr.release);
   mdr_opt.contact_penalty = mdr.contact_penalty;
+  mdr_opt.psi_b = mdr.psi_b;
+  if (mdr.psi_b > 0.0 && law != Law::mdr) throw std::invalid_argument("epac plugin: psi_b is an MDR coefficient");
   switch (law) {
     case Law::hertz_mindlin:
       return dispatch<HM, kFriction | kDamping | kRolling>(e & (kFriction | kDamping | kRolling), mats, [&](auto* m) {
@@ -186,6 +225,17 @@ std::unique_ptr<ContactEngine> make_engine(Law law, const std::vector<Material>&
       // Growth is compiled only with plasticity: under the plastic_loading rule (mdr_radius_growth.hpp)
       // only yielded sides grow R, so without a yield stress R stays R_o and the plain instance is
       // exact (radius_growth() then reports false and the host skips the update).
+      // Part II's bulk response (psi_b > 0): with growth (its psi gates (37)) and plasticity only,
+      // as LAMMPS's granular mdr always has both
+      if (mdr.psi_b > 0.0) {
+        if (!radius_growth || !(e & kPlasticity))
+          throw std::invalid_argument(
+              "psi_b > 0 (Part II's bulk response) needs fix epac/mdr (radius growth) and a finite yield stress");
+        return dispatch<MDR, kAdhesion | kPlasticity | kFriction | kDamping | kRadiusGrowth | kRolling | kBulkResponse,
+                        kPlasticity | kRadiusGrowth | kBulkResponse>(
+            e | kRadiusGrowth | kBulkResponse, mats,
+            [&](auto* m) { return std::remove_pointer_t<decltype(m)>::create(mats, mdr_opt); });
+      }
       if (radius_growth && (e & kPlasticity))
         return dispatch<MDR, kAdhesion | kPlasticity | kFriction | kDamping | kRadiusGrowth | kRolling,
                         kPlasticity | kRadiusGrowth>(e | kRadiusGrowth, mats, [&](auto* m) {

@@ -47,6 +47,20 @@ class ContactEngine {
   // contact penalty weights; nothing for the other laws). Atoms past nlocal are ghosts;
   // list_stamp changes whenever the list does.
   virtual void prepare_pass(const ContactList<>& /*pairs*/, int /*nlocal*/, std::int64_t /*list_stamp*/) {}
+  // --- MDR Part II, the bulk response (engines made with MdrChoices::psi_b > 0) ---
+  // The per-particle state, one entry per particles() slot: psi, V_geo and A_con,0 (the host
+  // writes each atom's values before the pass and reads the local ones back after update_radii),
+  // and d delta-bar (computed by mean_surface_displacement; the host copies the owners' values to
+  // the ghosts before compute()).
+  struct BulkViews {
+    Kokkos::View<double*, DefaultDevice> psi, vgeo, acon0, ddelta_bar;
+  };
+  virtual bool bulk_response() const { return false; }
+  virtual BulkViews bulk_views() { return {}; }
+  // After prepare_pass, with the pass's history and wall contacts: d delta-bar of every atom
+  // (complete on local atoms); advance false (setup passes): 0, as LAMMPS's fix does.
+  virtual void mean_surface_displacement(const ContactList<>& /*pairs*/, const ContactHistory<double>& /*history*/,
+                                         const WallPass* /*walls*/, bool /*advance*/) {}
   // The largest separation at which the law still holds two spheres of radii Ri, Rj of
   // materials a, b together (0 without adhesion): the neighbour cutoff must reach it.
   virtual double critical_separation(int a, int b, double Ri, double Rj) const = 0;
@@ -77,6 +91,7 @@ struct MdrChoices {
       adhesive_radius = 0, release = 0;
   double kt = 0.0;
   bool contact_penalty = false;  // MdrOptions::contact_penalty
+  double psi_b = 0.0;            // MdrOptions::psi_b (> 0: Part II's bulk response; needs radius growth)
 };
 std::unique_ptr<ContactEngine> make_engine(Law law, const std::vector<Material>& materials, bool radius_growth = false,
                                            const MdrChoices& mdr = {});

@@ -22,11 +22,12 @@ FixEpacMdr::FixEpacMdr(LAMMPS* lmp, int narg, char** arg) : Fix(lmp, narg, arg) 
                  "Fix epac/mdr: fix {} is one already (only one may be defined: it holds every atom's "
                  "R_o and V)",
                  f->id);
-  comm_forward = 2;  // R, V
+  comm_forward = 5;  // R, V, and Part II's psi, V_geo, A_con,0 (Stage)
 }
 
 FixEpacMdr::~FixEpacMdr() {
   if (state_fix_made_ && modify->nfix && modify->get_fix_by_id(state_id)) modify->delete_fix(state_id);
+  if (bulk_fix_made_ && modify->nfix && modify->get_fix_by_id(bulk_state_id)) modify->delete_fix(bulk_state_id);
 }
 
 // No per-step hook: the pair style applies the growth right after its force pass.
@@ -41,10 +42,26 @@ void FixEpacMdr::post_constructor() {
     modify->add_fix(fmt::format("{} all property/atom d_epac_Ro d_epac_V ghost yes", state_id));
     state_fix_made_ = true;
   }
+  // Part II's state in a second fix property/atom (restart files written before it have only the
+  // first; initialize_new_atoms then starts it from V_geo = 0)
+  if (atom->find_custom("epac_psi", flag, cols) < 0) {
+    modify->add_fix(
+        fmt::format("{} all property/atom d_epac_psi d_epac_Vgeo d_epac_Acon0 d_epac_ddbar ghost yes", bulk_state_id));
+    bulk_fix_made_ = true;
+  }
+  find_state();
+}
+
+void FixEpacMdr::find_state() {
+  int flag, cols;
   index_ro_ = atom->find_custom("epac_Ro", flag, cols);
   index_v_ = atom->find_custom("epac_V", flag, cols);
-  if (index_ro_ < 0 || index_v_ < 0 || flag != 1 || cols != 0)
-    error->all(FLERR, "Fix epac/mdr: per-atom vectors epac_Ro and epac_V are missing or not double vectors");
+  index_psi_ = atom->find_custom("epac_psi", flag, cols);
+  index_vgeo_ = atom->find_custom("epac_Vgeo", flag, cols);
+  index_acon0_ = atom->find_custom("epac_Acon0", flag, cols);
+  index_ddbar_ = atom->find_custom("epac_ddbar", flag, cols);
+  if (index_ro_ < 0 || index_v_ < 0 || index_psi_ < 0 || index_vgeo_ < 0 || index_acon0_ < 0 || index_ddbar_ < 0)
+    error->all(FLERR, "Fix epac/mdr: its per-atom state (fix {} and {}) was deleted", state_id, bulk_state_id);
 }
 
 void FixEpacMdr::init() {
@@ -58,44 +75,71 @@ void FixEpacMdr::init() {
                "of its own atoms with ghosts");
   if (!force->pair_match("epac/mdr", 1))
     error->all(FLERR, "Fix epac/mdr requires pair_style epac/mdr (found {})", force->pair_style);
-  int flag, cols;
-  index_ro_ = atom->find_custom("epac_Ro", flag, cols);
-  index_v_ = atom->find_custom("epac_V", flag, cols);
-  if (index_ro_ < 0 || index_v_ < 0)
-    error->all(FLERR, "Fix epac/mdr: its per-atom state (fix {}) was deleted", state_id);
+  find_state();
 }
 
 double* FixEpacMdr::initial_radius() const { return atom->dvector[index_ro_]; }
 double* FixEpacMdr::volume() const { return atom->dvector[index_v_]; }
+double* FixEpacMdr::psi() const { return atom->dvector[index_psi_]; }
+double* FixEpacMdr::vgeo() const { return atom->dvector[index_vgeo_]; }
+double* FixEpacMdr::acon0() const { return atom->dvector[index_acon0_]; }
+double* FixEpacMdr::ddelta_bar() const { return atom->dvector[index_ddbar_]; }
 
 void FixEpacMdr::initialize_new_atoms() {
   double* radius = atom->radius;
   double *ro = initial_radius(), *V = volume();
+  double *ps = psi(), *vg = vgeo(), *ac = acon0();
   const int nall = atom->nlocal + atom->nghost;
   const double pi = 3.14159265358979323846;
-  for (int i = 0; i < nall; i++)
+  for (int i = 0; i < nall; i++) {
     if (ro[i] == 0.0) {  // a new atom (property/atom starts at 0): its radius now is its R_o
       ro[i] = radius[i];
       V[i] = 4.0 / 3.0 * pi * radius[i] * radius[i] * radius[i];
     }
+    if (vg[i] == 0.0) {  // Part II's state of a new atom (V_geo > 0 once set): no contact yet
+      ps[i] = 1.0;
+      vg[i] = 4.0 / 3.0 * pi * ro[i] * ro[i] * ro[i];
+      ac[i] = 0.0;
+    }
+  }
 }
 
 int FixEpacMdr::pack_forward_comm(int n, int* list, double* buf, int, int*) {
   double *radius = atom->radius, *V = volume();
+  double *ps = psi(), *vg = vgeo(), *ac = acon0(), *dd = ddelta_bar();
   int m = 0;
   for (int k = 0; k < n; k++) {
     const int j = list[k];
+    if (stage_ == Stage::mean_surface_displacement) {
+      buf[m++] = dd[j];
+      continue;
+    }
     buf[m++] = radius[j];
     buf[m++] = V[j];
+    if (stage_ == Stage::growth_and_bulk) {
+      buf[m++] = ps[j];
+      buf[m++] = vg[j];
+      buf[m++] = ac[j];
+    }
   }
   return m;
 }
 
 void FixEpacMdr::unpack_forward_comm(int n, int first, double* buf) {
   double *radius = atom->radius, *V = volume();
+  double *ps = psi(), *vg = vgeo(), *ac = acon0(), *dd = ddelta_bar();
   int m = 0;
   for (int i = first; i < first + n; i++) {
+    if (stage_ == Stage::mean_surface_displacement) {
+      dd[i] = buf[m++];
+      continue;
+    }
     radius[i] = buf[m++];
     V[i] = buf[m++];
+    if (stage_ == Stage::growth_and_bulk) {
+      ps[i] = buf[m++];
+      vg[i] = buf[m++];
+      ac[i] = buf[m++];
+    }
   }
 }

@@ -31,12 +31,26 @@ class FixEpacMdr : public Fix {
   void initialize_new_atoms();
   double* initial_radius() const;  // R_o per atom (local and ghost)
   double* volume() const;          // V of MDR (39) per atom
+  // Part II's bulk response (pair_coeff psi_b > 0): psi, V_geo, A_con,0 between passes and this
+  // pass's d delta-bar, per atom (new atoms: psi 1, V_geo V_o, A_con,0 0)
+  double* psi() const;
+  double* vgeo() const;
+  double* acon0() const;
+  double* ddelta_bar() const;
+  // What the next forward_comm sends: R and V; R, V and Part II's psi, V_geo, A_con,0; or the
+  // mean surface displacement d delta-bar alone.
+  enum class Stage { growth, growth_and_bulk, mean_surface_displacement };
+  void forward_stage(Stage s) { stage_ = s; }
 
   static constexpr const char* state_id = "EPAC_MDR_PARTICLE_STATE";
+  static constexpr const char* bulk_state_id = "EPAC_MDR_BULK_STATE";
 
  private:
   int index_ro_ = -1, index_v_ = -1;
-  bool state_fix_made_ = false;
+  int index_psi_ = -1, index_vgeo_ = -1, index_acon0_ = -1, index_ddbar_ = -1;
+  bool state_fix_made_ = false, bulk_fix_made_ = false;
+  Stage stage_ = Stage::growth;
+  void find_state();
 };
 
 }  // namespace LAMMPS_NS

@@ -83,6 +83,7 @@ void PairEpac::allocate() {
   materials_.assign(n, epac::Material{});
   have_material_.assign(n, 0);
   kt_.assign(n, 0.0);
+  psi_b_.assign(n, 0.0);
 }
 
 // pair_style epac/<law> [pair_split equal_pair|balanced|geometric] [delta_max paper_19|running_max]
@@ -159,7 +160,8 @@ void PairEpac::settings(int narg, char** arg) {
 //   epac/mdr:           E nu Y gamma psi_b e [mu MU] [kt KT]
 // E [Pa], nu, e the normal restitution coefficient (1: no damping), mu the sliding friction
 // coefficient (0: no friction), gamma the surface energy [J/m^2] (0: no adhesion), Y the yield
-// stress [Pa] (inf: none), psi_b Part II's bulk-response threshold (not in epac: must be 0),
+// stress [Pa] (inf: none), psi_b Part II's bulk-response threshold (0: none; > 0 needs fix
+// epac/mdr and one value for every type),
 // kt the constant tangential stiffness [N/m] of pair_style epac/mdr friction authors.
 // Every law also takes `rolling sds K_R GAMMA_R MU_R` after its coefficients: LAMMPS's rolling
 // resistance (models/rolling_resistance.hpp), k_r [N/m], gamma_r [N s/m], mu_r.
@@ -203,12 +205,6 @@ epac::Material PairEpac::material_from(char** arg, int type) const {
     case Law::mdr: {
       m.yield_stress = num(2);
       m.surface_energy = num(3);
-      const double psi_b = num(4);
-      if (psi_b != 0.0)
-        error->all(FLERR,
-                   "pair_coeff {}: psi_b = {} is not supported (valid: 0; epac implements MDR Part I, "
-                   "without Part II's bulk response)",
-                   style_, psi_b);
       m.restitution = num(5);
       break;
     }
@@ -264,6 +260,7 @@ void PairEpac::coeff(int narg, char** arg) {
     materials_[i - 1].name = "type " + std::to_string(i);
     have_material_[i - 1] = 1;
     kt_[i - 1] = kt;
+    if (law_ == Law::mdr) psi_b_[i - 1] = utils::numeric(FLERR, arg[2 + 4], false, lmp);
     for (int j = MAX(jlo, i); j <= jhi; j++) {
       setflag[i][j] = 1;
       count++;
@@ -304,6 +301,18 @@ void PairEpac::init_style() {
   choices.adhesive_radius = adhesive_radius_;
   choices.release = release_;
   choices.contact_penalty = contact_penalty_ != 0;
+  if (law_ == Law::mdr) {  // Part II's psi_b: epac's MdrOptions holds one value
+    choices.psi_b = psi_b_[0];
+    for (int t = 0; t < atom->ntypes; t++)
+      if (psi_b_[t] != psi_b_[0] || !(psi_b_[t] >= 0.0 && psi_b_[t] <= 1.0))
+        error->all(FLERR, "pair {}: psi_b must be one value in [0, 1] for every type (type {}: {}, type 1: {})", style_,
+                   t + 1, psi_b_[t], psi_b_[0]);
+    if (choices.psi_b > 0.0 && !growth_fix_)
+      error->all(FLERR,
+                 "pair {}: psi_b = {} (Part II's bulk response) needs fix epac/mdr (its psi gates radius growth, "
+                 "as in LAMMPS's granular mdr)",
+                 style_, choices.psi_b);
+  }
   // the penalty walks each local atom's pairs: with newton on a pair with a ghost is listed by one
   // process only, so a local atom's list can miss an overlapping partner
   if (contact_penalty_ && force->newton_pair)
@@ -324,6 +333,7 @@ void PairEpac::init_style() {
     engine_ = epac::lammps::make_engine(law_, mats, growth_fix_ != nullptr, choices);
   } catch (std::exception& e) { error->all(FLERR, "pair {}: {}", style_, e.what()); }
   growth_ = engine_->radius_growth();
+  bulk_ = engine_->bulk_response();
   if (fix_history_ && engine_->history_size() != history_size_)
     error->all(FLERR,
                "pair {}: the coefficients or fix epac/mdr changed the history size ({} -> {}) after the "
@@ -442,6 +452,38 @@ void PairEpac::gather_atoms(int nall) {
     for (int i = 0; i < nall; i++) V(i) = av_[i];
     Kokkos::deep_copy(Vd, V);
   }
+  if (bulk_) {  // Part II's psi, V_geo and A_con,0, kept by the fix between passes
+    const auto b = engine_->bulk_views();
+    auto psi = Kokkos::create_mirror_view(b.psi);
+    auto vgeo = Kokkos::create_mirror_view(b.vgeo);
+    auto acon0 = Kokkos::create_mirror_view(b.acon0);
+    const double *fp = growth_fix_->psi(), *fv = growth_fix_->vgeo(), *fa = growth_fix_->acon0();
+    for (int i = 0; i < nall; i++) {
+      psi(i) = fp[i];
+      vgeo(i) = fv[i];
+      acon0(i) = fa[i];
+    }
+    Kokkos::deep_copy(b.psi, psi);
+    Kokkos::deep_copy(b.vgeo, vgeo);
+    Kokkos::deep_copy(b.acon0, acon0);
+  }
+}
+
+// Part II's mean surface displacement: computed for every atom, complete on local atoms (newton
+// off: every pair of a local atom is in this process's list), then the owners' values copied to
+// the ghosts (forward_comm), as fix GRANULAR/MDR does.
+void PairEpac::mean_surface_displacement(const epac::ContactHistory<double>& h, const epac::lammps::WallPass* wp,
+                                         bool advance) {
+  engine_->mean_surface_displacement(contacts_, h, wp, advance);
+  const auto dd = engine_->bulk_views().ddelta_bar;
+  auto host = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), dd);
+  double* f = growth_fix_->ddelta_bar();
+  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
+  for (int i = 0; i < nlocal; i++) f[i] = host(i);
+  growth_fix_->forward_stage(FixEpacMdr::Stage::mean_surface_displacement);
+  comm->forward_comm(growth_fix_);
+  for (int i = nlocal; i < nall; i++) host(i) = f[i];
+  Kokkos::deep_copy(dd, host);
 }
 
 // MDR radius growth after a force pass: (37)-(39) applied to local atoms only (their sums are
@@ -459,6 +501,19 @@ void PairEpac::grow_radii(int nlocal, bool advance) {
     radius[i] = R(i);
     av[i] = V(i);
   }
+  if (bulk_) {  // Part II's psi, V_geo, A_con,0 of the local atoms (update_radii computed them)
+    const auto b = engine_->bulk_views();
+    auto psi = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), b.psi);
+    auto vgeo = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), b.vgeo);
+    auto acon0 = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), b.acon0);
+    double *fp = growth_fix_->psi(), *fv = growth_fix_->vgeo(), *fa = growth_fix_->acon0();
+    for (int i = 0; i < nlocal; i++) {
+      fp[i] = psi(i);
+      fv[i] = vgeo(i);
+      fa[i] = acon0(i);
+    }
+  }
+  growth_fix_->forward_stage(bulk_ ? FixEpacMdr::Stage::growth_and_bulk : FixEpacMdr::Stage::growth);
   comm->forward_comm(growth_fix_);
 }
 
@@ -628,6 +683,7 @@ void PairEpac::compute(int eflag, int vflag) {
   if (have_walls) collect_walls();
   const epac::lammps::WallPass* wp = have_walls ? &walls_ : nullptr;
   engine_->prepare_pass(contacts_, nlocal, list_stamp_);
+  if (bulk_) mean_surface_displacement(h, wp, advance);
   if (vflag_either) {
     epac::ContactForceBuffer<double, epac::DefaultDevice> buf(n);
     engine_->compute(contacts_, h, dt, buf, wp);
@@ -677,8 +733,9 @@ void PairEpac::transfer_history(double* source, double* target, int, int) {
 void PairEpac::write_restart(FILE* fp) {
   for (int i = 1; i <= atom->ntypes; i++) {
     const epac::Material& m = materials_[i - 1];
-    // 11 values per type (8 before rolling resistance: restart files of earlier versions do not read)
-    const double v[11] = {m.youngs_modulus,
+    // 12 values per type (11 before psi_b, 8 before rolling resistance: restart files of earlier
+    // versions do not read)
+    const double v[12] = {m.youngs_modulus,
                           m.poisson_ratio,
                           m.restitution,
                           m.friction,
@@ -688,17 +745,18 @@ void PairEpac::write_restart(FILE* fp) {
                           kt_[i - 1],
                           m.rolling_stiffness,
                           m.rolling_damping,
-                          m.rolling_friction};
-    fwrite(v, sizeof(double), 11, fp);
+                          m.rolling_friction,
+                          psi_b_[i - 1]};
+    fwrite(v, sizeof(double), 12, fp);
   }
 }
 
 void PairEpac::read_restart(FILE* fp) {
   allocate();
   for (int i = 1; i <= atom->ntypes; i++) {
-    double v[11];
-    if (comm->me == 0) utils::sfread(FLERR, v, sizeof(double), 11, fp, nullptr, error);
-    MPI_Bcast(v, 11, MPI_DOUBLE, 0, world);
+    double v[12];
+    if (comm->me == 0) utils::sfread(FLERR, v, sizeof(double), 12, fp, nullptr, error);
+    MPI_Bcast(v, 12, MPI_DOUBLE, 0, world);
     epac::Material& m = materials_[i - 1];
     m.name = "type " + std::to_string(i);
     m.density = 1.0;
@@ -713,6 +771,7 @@ void PairEpac::read_restart(FILE* fp) {
     m.rolling_stiffness = v[8];
     m.rolling_damping = v[9];
     m.rolling_friction = v[10];
+    psi_b_[i - 1] = v[11];
     for (int j = i; j <= atom->ntypes; j++) setflag[i][j] = have_material_[i - 1] && have_material_[j - 1];
   }
 }

@@ -40,6 +40,7 @@ class PairEpac : public Pair {
   void allocate();
   void gather_atoms(int nall);
   void grow_radii(int nlocal, bool advance);
+  void mean_surface_displacement(const epac::ContactHistory<double>& h, const epac::lammps::WallPass* wp, bool advance);
   void build_contacts();
   void add_forces(int nlocal, bool with_ghosts);
   int coefficient_count() const;
@@ -63,6 +64,8 @@ class PairEpac : public Pair {
   int contact_penalty_ = 0;      // pair_style epac/mdr contact_penalty off|on: MdrOptions::contact_penalty
   std::int64_t list_stamp_ = 0;  // counts build_contacts() (the contact penalty's index follows it)
   std::vector<double> kt_;       // per type: pair_coeff keyword kt (MdrFriction::authors' k_t)
+  std::vector<double> psi_b_;    // per type: pair_coeff psi_b (epac/mdr; one value for all types)
+  bool bulk_ = false;            // the engine has Part II's bulk response (psi_b > 0)
   // fix epac/wall: their contacts are evaluated in this pass; the engine's materials then end with
   // one rigid copy per wall fix and type (index ntypes + f ntypes + type - 1) for the wall side
   std::vector<FixEpacWall*> wall_fixes_;

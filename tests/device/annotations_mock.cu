@@ -14,6 +14,7 @@
 #include <epac/core/root_solve.hpp>
 #include <epac/core/vec3.hpp>
 #include <epac/models/mdr/detail/mdr_adhesion.hpp>
+#include <epac/models/mdr/mdr_bulk_response.hpp>
 #include <epac/models/mdr/mdr_contact_penalty.hpp>
 #include <epac/models/mdr/mdr_parameters.hpp>
 #include <epac/models/rolling_resistance.hpp>
@@ -35,6 +36,10 @@ __global__ void device_paths(T* out, T* row) {
   out[3] = epac::rolling_sds_force(rp, b, a, T(1), T(1e-6), h).x;
   // MDR's contact penalty: a triangle's term and the longest-side order
   out[4] = epac::mdr_penalty_shorter(T(1), 3u, T(2), 5u) ? epac::mdr_penalty_term(T(2)) : T(0);
+  // MDR Part II: the increment split, A_c and F_BULK
+  epac::MdrBulkSide<T> bs;
+  const T d_mdr = epac::mdr_bulk_split(T(0.01), T(0.4), T(0.5), T(0.002), bs);
+  out[5] = epac::mdr_bulk_force(T(1e9), T(1), T(2), bs.delta_bulk, epac::mdr_bulk_area(d_mdr, T(1), true, T(-0.1)));
 }
 
 int main() {

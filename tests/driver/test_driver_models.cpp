@@ -290,6 +290,54 @@ TEST_CASE("mdr in the driver: contact_penalty = \"on\" weights a contact through
   CHECK(force[1].at({1, 2}) == force[0].at({1, 2}));
 }
 
+TEST_CASE("mdr in the driver: psi_b > 0 (Part II) stiffens a confined sphere and stops its growth",
+          "[driver][models][mdr][bulk]") {
+  // A driven sphere (R = 1 mm, E/Y 100) squeezed evenly by six rigid walls to 8% of R: its free
+  // surface fraction falls to about 0.76 (A_con = 6 pi R delta of 4 pi R^2), so psi_b = 0.9 turns
+  // the bulk response on about halfway (models/mdr/mdr_bulk_response.hpp); psi_b = 0 is Part I.
+  auto scene = [](double psi_b) {
+    std::string walls;
+    const char* axes[3] = {"x", "y", "z"};
+    for (int k = 0; k < 6; ++k) {
+      const int a = k / 2;
+      const double sgn = k % 2 == 0 ? -1.0 : 1.0;
+      double pt[3] = {0, 0, 0}, n[3] = {0, 0, 0}, v[3] = {0, 0, 0};
+      pt[a] = sgn * 1e-3;
+      n[a] = -sgn;
+      v[a] = -sgn * 0.8;  // 8e-5 m over 1e-4 s
+      char b[512];
+      std::snprintf(b, sizeof b,
+                    "[[walls]]\nname = \"%s%d\"\npoint = [%g, %g, %g]\nnormal = [%g, %g, %g]\nmaterial = \"plate\"\n"
+                    "motion = [{duration = 1e-4, velocity = [%g, %g, %g]}]\n",
+                    axes[a], k % 2, pt[0], pt[1], pt[2], n[0], n[1], n[2], v[0], v[1], v[2]);
+      walls += b;
+    }
+    char m[256];
+    std::snprintf(m, sizeof m, "[model]\nname = \"mdr\"\npair_split = \"geometric\"\npsi_b = %g\n", psi_b);
+    return std::string(
+               "[materials.ball]\nyoungs_modulus = 1e8\npoisson_ratio = 0.3\nyield_stress = 1e6\ndensity = 1000\n"
+               "[materials.plate]\nrigid = true\n") +
+           m + "[[particles.list]]\nposition = [0, 0, 0]\nradius = 1e-3\nmaterial = \"ball\"\ndriven = true\n" + walls +
+           "[run]\ndt = 1e-8\nsteps = 10000\noutput_interval = 100\n";
+  };
+  double f_end[2], ratio[2];
+  for (int on = 0; on < 2; ++on) {
+    const fs::path dir = fresh_out_dir("mdr_bulk");
+    const RunSummary s = run_scene_text(scene(on ? 0.9 : 0.0), dir);
+    CHECK(s.effects == (on ? "plasticity, radius_growth, bulk_response" : "plasticity, radius_growth"));
+    const auto c = read_csv_columns(dir / "timeseries.csv");
+    const auto& f = c.at("force_x0");
+    f_end[on] = f.back();
+    for (double x : f) REQUIRE(std::isfinite(x));
+    ratio[on] = counter_of(s, "mdr_max_radius_ratio");
+    fs::remove_all(dir);
+  }
+  CHECK(f_end[0] > 0.0);
+  CHECK(f_end[1] > 1.5 * f_end[0]);  // the bulk force adds to the frozen MDR force
+  CHECK(ratio[1] < ratio[0]);        // growth stopped once confined
+  CHECK(ratio[1] > 1.0);             // but not before
+}
+
 TEST_CASE("model keys are range-checked on parse", "[driver][models][scene]") {
   const std::string mat = "youngs_modulus = 1e8\npoisson_ratio = 0.3\nyield_stress = 2e6";
   auto message = [&](const std::string& model_block) {
@@ -309,6 +357,13 @@ TEST_CASE("model keys are range-checked on parse", "[driver][models][scene]") {
   CHECK(message("name = \"mdr\"\ngrowth_rule = 1").find("model.growth_rule must be a string") == 0);
   CHECK(message("name = \"mdr\"\nradius_cap = 0.5").find("model.radius_cap = 0.5 is outside") == 0);
   CHECK(message("name = \"mdr\"\ncontact_penalty = \"on\"") == "accepted");
+  CHECK(message("name = \"mdr\"\npsi_b = 1.5").find("model.psi_b = 1.5 is outside") == 0);
+  CHECK(message("name = \"mdr\"\npsi_b = 0.5").find("pair_split = geometric") != std::string::npos);
+  CHECK(message("name = \"mdr\"\npsi_b = 0.5\npair_split = \"geometric\"") == "accepted");
+  CHECK(message("name = \"mdr\"\npsi_b = 0.5\npair_split = \"geometric\"\neffects = [\"plasticity\"]")
+            .find("needs the bulk_response effect") != std::string::npos);
+  CHECK(message("name = \"mdr\"\npair_split = \"geometric\"\neffects = [\"plasticity\", \"bulk_response\"]")
+            .find("bulk_response needs model.psi_b > 0") != std::string::npos);
   CHECK(message("name = \"mdr\"\ncontact_penalty = \"yes\"")
             .find("model.contact_penalty = \"yes\" is not valid (valid: \"off\", \"on\")") == 0);
   CHECK(

@@ -10,21 +10,22 @@ and what epac needs:
 
   lammps:       the input as shipped, plus a print of the smallest psi (Part II's free-area ratio);
   lammps_psi0:  the same with psi_b 0 (Part II's bulk response never triggers);
-  epac_penalty: as epac below, with contact_penalty on (LAMMPS's MDR contact penalty, which
-                granular mdr always applies);
+  epac_shipped: as epac below, with contact_penalty on (LAMMPS's MDR contact penalty, which
+                granular mdr always applies) and psi_b as shipped (Part II's bulk response,
+                mdr_bulk_response.hpp);
+  epac_penalty: the same with psi_b 0;
   epac:         plugin load epacplugin.so; pair_style epac/mdr with the authors' choices (pair_split
                 geometric delta_max running_max damping authors friction authors yield_onset
                 hertz_40 surface_energy_share each_side_full adhesive_radius authors release
-                zero_overlap, the last three without effect here: no adhesion); pair_coeff * * E nu Y gamma 0 CoR mu MU kt KT (psi_b 0: epac implements
-                Part I, no bulk response); fix epac/mdr (radius growth); each fix wall/gran/region
-                replaced by fix epac/wall on the same region; the contact-area output of the
-                particle pair 1-12 (compute pair/local p13, granular only) removed.
+                zero_overlap, the last three without effect here: no adhesion); pair_coeff * * E nu
+                Y gamma 0 CoR mu MU kt KT (psi_b 0); fix epac/mdr (radius growth); each fix
+                wall/gran/region replaced by fix epac/wall on the same region; the contact-area
+                output of the particle pair 1-12 (compute pair/local p13, granular only) removed.
 
 Checks, each wall force relative to the peak of the LAMMPS curve:
-  1. the shipped input against epac_penalty up to the step before Part II's bulk response
-     triggers (the first step with psi < psi_b on any particle, wall displacement 0.424 of 0.499):
-     within --tol of the peak of the example's curve (its whole run); the deviation relative to
-     the peak before the bulk response is printed too;
+  1. the shipped input against epac_shipped over the whole run (Part II's bulk response triggers
+     at wall displacement 0.424 of 0.499): within --tol; the deviation up to the step before the
+     bulk response triggers is printed too;
   2. psi_b 0 against epac_penalty over the whole run: within --tol-penalty (the contact penalty,
      mdr_contact_penalty.hpp, validated: both codes apply it);
   psi_b 0 against epac without the penalty is printed (what the penalty moves).
@@ -32,8 +33,9 @@ With --lammps-src (LAMMPS's src folder) a third check takes the penalty out of b
 script compiles a small library that replaces fix granular/mdr's calculate_contact_penalty by a
 no-op and reruns lammps_psi0 with it preloaded (LD_PRELOAD; a diagnostic, not a LAMMPS option):
   3. psi_b 0 without the penalty against epac without it over the whole run: within --tol-no-penalty.
---ranks 2 also runs epac_penalty on 2 MPI ranks (fix epac/wall's per-atom history migrates with
-the atoms; the penalty walks each local atom's pairs, ghosts included) and requires the printed
+--ranks 2 also runs epac_shipped on 2 MPI ranks (fix epac/wall's per-atom history migrates with
+the atoms; the penalty walks each local atom's pairs, ghosts included; Part II's per-atom state and
+mean surface displacement reach the ghosts by forward communication) and requires the printed
 forces to agree with 1 rank to 1e-10 of the peak.
 --sensitivity reruns epac with each of the authors' choices back at epac's default and prints how
 far each moves the curves (why each convention is needed); no check.
@@ -75,7 +77,7 @@ def lammps_input(shipped, psi_b):
     return s
 
 
-def epac_input(shipped, plugin, choices):
+def epac_input(shipped, plugin, choices, psi_b="0"):
     s = re.sub(r"^dump", "#dump", shipped, flags=re.M)
     s = s.replace("force_disp_triaxial12.csv", "walls.csv")
     opts = " ".join(f"{k} {v}" for k, v in choices.items())
@@ -83,8 +85,8 @@ def epac_input(shipped, plugin, choices):
                      f"plugin load {plugin}\npair_style epac/mdr {opts}\nfix epac_growth all epac/mdr", "pair_style")
     s = replace_once(s, "pair_coeff * * mdr ${YoungsModulus} ${PoissonsRatio} ${YieldStress} ${SurfaceEnergy} ${psi_b} "
                      "${CoR} tangential linear_history ${kt} ${xgammat} ${mu_s} damping none",
-                     "pair_coeff * * ${YoungsModulus} ${PoissonsRatio} ${YieldStress} ${SurfaceEnergy} 0 ${CoR} "
-                     "mu ${mu_s} kt ${kt}", "pair_coeff")
+                     "pair_coeff * * ${YoungsModulus} ${PoissonsRatio} ${YieldStress} ${SurfaceEnergy} " + psi_b +
+                     " ${CoR} mu ${mu_s} kt ${kt}", "pair_coeff")
     s, n = re.subn(r"^fix (\S+) all wall/gran/region \$\{wall_contact_string\} region (\S+) contacts$",
                    r"fix \1 all epac/wall region \2 contacts", s, flags=re.M)
     if n != 6:
@@ -122,7 +124,7 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     add_common_arguments(ap)
     ap.add_argument("--mpirun", default="mpirun")
-    ap.add_argument("--tol", type=float, default=0.01)
+    ap.add_argument("--tol", type=float, default=1e-3)  # the issue asked 1%; both codes agree to 2e-4
     ap.add_argument("--lammps-src", default=None, help="LAMMPS's src folder: adds check 3 (no contact penalty)")
     ap.add_argument("--tol-no-penalty", type=float, default=1e-3)
     ap.add_argument("--tol-penalty", type=float, default=1e-3)
@@ -136,6 +138,7 @@ def main():
     epac_rows, _ = run(args, "epac", epac_input(shipped, args.plugin, AUTHORS))
     with_penalty = dict(AUTHORS, contact_penalty="on")
     pen_rows, _ = run(args, "epac_penalty", epac_input(shipped, args.plugin, with_penalty))
+    shipped_rows, _ = run(args, "epac_shipped", epac_input(shipped, args.plugin, with_penalty, "${psi_b}"))
     psi_b = float(re.search(r"^variable psi_b\s+equal\s+(\S+)", shipped, flags=re.M).group(1))
     onset = next((k for k, r in enumerate(psi) if r[1] < psi_b), len(psi))
     # psi.csv and walls.csv print the same steps (fix print every step, defined in that order)
@@ -147,8 +150,9 @@ def main():
     # check 1 against the peak of the shipped run's curve (the example's peak force); printed also
     # against the peak over the compared range
     whole_peak = compare(lmp_rows, lmp_rows, len(lmp_rows))
-    checks = [("shipped input, before bulk response", lmp_rows, onset, args.tol, [p for _, _, p in whole_peak],
-               pen_rows),
+    checks = [("shipped input, whole run", lmp_rows, len(lmp_rows), args.tol, None, shipped_rows),
+              ("shipped input, before bulk response", lmp_rows, onset, args.tol, [p for _, _, p in whole_peak],
+               shipped_rows),
               ("psi_b 0, whole run", psi0_rows, len(psi0_rows), args.tol_penalty, None, pen_rows)]
     if args.lammps_src:
         lib = build_no_penalty(args)
@@ -174,11 +178,11 @@ def main():
           ", ".join(f"{w} {r:.3f}" for w, (r, _, _) in zip(WALLS, full)))
 
     if args.ranks > 1:
-        two, _ = run(args, f"epac_penalty_{args.ranks}ranks", epac_input(shipped, args.plugin, with_penalty),
-                     ranks=args.ranks)
-        res = compare(pen_rows, two, len(pen_rows))
+        two, _ = run(args, f"epac_shipped_{args.ranks}ranks",
+                     epac_input(shipped, args.plugin, with_penalty, "${psi_b}"), ranks=args.ranks)
+        res = compare(shipped_rows, two, len(shipped_rows))
         worst = max(r for r, _, _ in res)
-        flag = "ok" if worst <= 1e-10 and len(two) == len(pen_rows) else "FAIL"
+        flag = "ok" if worst <= 1e-10 and len(two) == len(shipped_rows) else "FAIL"
         ok = ok and flag == "ok"
         print(f"  epac 1 against {args.ranks} ranks: max |dF| / peak = {worst:.3e}  [{flag}, tol 1e-10]")
 

@@ -9,8 +9,9 @@ enum EffectBits : unsigned {
   kFriction = 1u << 2,
   kDamping = 1u << 3,
   kRadiusGrowth = 1u << 4,
-  kRolling = 1u << 5,  // rolling resistance (models/rolling_resistance.hpp), every law
-  kAllEffects = (1u << 6) - 1u,
+  kRolling = 1u << 5,       // rolling resistance (models/rolling_resistance.hpp), every law
+  kBulkResponse = 1u << 6,  // MDR Part II's bulk response (models/mdr/mdr_bulk_response.hpp), MDR only
+  kAllEffects = (1u << 7) - 1u,
 };
 
 template <unsigned Bits>
@@ -22,6 +23,7 @@ struct Effects {
   static constexpr bool damping = (Bits & kDamping) != 0;
   static constexpr bool radius_growth = (Bits & kRadiusGrowth) != 0;
   static constexpr bool rolling = (Bits & kRolling) != 0;
+  static constexpr bool bulk_response = (Bits & kBulkResponse) != 0;
 };
 
 using AllEffects = Effects<kAllEffects>;

@@ -34,7 +34,13 @@ struct MdrSideFields {
   static constexpr int delta_o_prev = plastic_count + adhesion_count;
   static constexpr int eps_prev = delta_o_prev + 1;
   static constexpr int growth_count = Eff::radius_growth ? 2 : 0;
-  static constexpr int count = plastic_count + adhesion_count + growth_count;
+  // with the bulk response (Part II, mdr_bulk_response.hpp: MdrBulkSide)
+  static constexpr int bulk_delta_last = plastic_count + adhesion_count + growth_count;
+  static constexpr int bulk_delta_mdr = bulk_delta_last + 1;
+  static constexpr int bulk_delta_bulk = bulk_delta_last + 2;
+  static constexpr int bulk_area_w = bulk_delta_last + 3;
+  static constexpr int bulk_count = Eff::bulk_response ? 4 : 0;
+  static constexpr int count = plastic_count + adhesion_count + growth_count + bulk_count;
 };
 
 }  // namespace epac

@@ -43,6 +43,11 @@
 // - Contact penalty (MdrOptions::contact_penalty, off by default; mdr_contact_penalty.hpp): a pair
 //   contact's MDR force, its damping and its growth terms are multiplied by the weight w that
 //   compute_contact_penalty(particles, pairs) computed before the pass, as in LAMMPS's MDR.
+// - Bulk response (Part II, effect kBulkResponse with MdrOptions::psi_b > 0; mdr_bulk_response.hpp):
+//   each side's law sees delta_MDR, its force gains F_BULK; the host calls bind(particles), then
+//   per step compute_mean_surface_displacement before the force pass and update_radii after it.
+//   Defined on the authors' flat placement (MdrPairSplit::geometric), where a side's overlap is a
+//   closed form of the positions that the pre-pass can evaluate before the force pass.
 #include <epac/compute/contact_side_sums.hpp>
 #include <epac/models/contact_conventions.hpp>
 #include <epac/models/contact_geometry.hpp>
@@ -54,6 +59,7 @@
 #include <epac/models/mdr/detail/mdr_pair_equal.hpp>
 #include <epac/models/mdr/detail/mdr_pair_split.hpp>
 #include <epac/models/mdr/detail/mdr_side_force.hpp>
+#include <epac/models/mdr/mdr_bulk_response.hpp>
 #include <epac/models/mdr/mdr_contact_penalty.hpp>
 #include <epac/models/mdr/mdr_history_layout.hpp>
 #include <epac/models/mdr/mdr_parameters.hpp>
@@ -81,10 +87,12 @@ struct MdrContactOutput {
   bool active = false;
 };
 
-// Default effects: everything MDR itself models; rolling resistance (kRolling) is opt-in, as for
-// every law.
-template <class T, class Eff = Effects<kAllEffects & ~kRolling>, class Device = DefaultDevice>
+// Default effects: everything MDR Part I models; rolling resistance (kRolling) is opt-in, as for
+// every law, and so is Part II's bulk response (kBulkResponse).
+template <class T, class Eff = Effects<kAllEffects & ~kRolling & ~kBulkResponse>, class Device = DefaultDevice>
 struct Mdr {
+  static_assert(!Eff::bulk_response || Eff::plasticity,
+                "epac: MDR's bulk response (kBulkResponse) needs kPlasticity (A_c and delta_max,MDR of Part II)");
   using scalar_type = T;
   using effects = Eff;
   using device_type = Device;
@@ -120,6 +128,7 @@ struct Mdr {
   bool release_at_zero_overlap = false;  // MdrOptions::release == zero_overlap
   MdrGrowthState<T, Device> growth;      // bound by bind() when Eff::radius_growth
   MdrContactPenalty<T, Device> penalty;  // weights of the pair contacts (MdrOptions::contact_penalty)
+  MdrBulkState<T, Device> bulk;          // Part II's per-particle state, bound by bind() with kBulkResponse
   // Deterministic mode: the growth terms (columns of growth.sums) per contact side, enabled by
   // begin_deterministic_pass; side 0 of a pair is the particle with the smaller global id.
   ContactSideSums<T, 3, Device> growth_terms;
@@ -179,15 +188,20 @@ struct Mdr {
     for (int s = 0; s < e.nsides; ++s) e.st[s] = load_side_at_step_start<Write>(row, s, e.a_adh_old[s]);
     e.dside[0] = g.delta;
     if (e.is_pair) o.delta_max = split_pair_overlap<Write>(g, row, e);
+    const bool bulky = Eff::bulk_response && bulk.bound();
+    if (bulky) bulk_split(row, e);  // delta_MDR per side (e.bulk), Part II
 
     // the sides' results: a pair's from the balanced split (detail/mdr_pair_balance.hpp, the
     // geometric split as its first guess), a wall's side directly
     e.before[0] = e.st[0];
     e.before[1] = e.st[1];
-    if (e.is_pair)
+    if (bulky)
+      bulk_sides(g, pc, e);  // each side at its delta_MDR (the geometric split only)
+    else if (e.is_pair)
       balance_pair_sides<Write>(g, row, pc, e);
     else
       wall_side(pc, e);
+    if (bulky) bulk_forces(pc, e);
 
     // the contact penalty's weight (1 for walls, and without the option: one branch)
     const T w = e.is_pair ? penalty.weight_of(g.contact) : T(1);
@@ -319,6 +333,11 @@ struct Mdr {
     m.growth.volume_floor = T(opt.volume_floor);
     m.rolling = RollingTable<T, Device, Eff::rolling>::create(materials);
     m.penalty.on = opt.contact_penalty;
+    if (opt.psi_b > 0.0 && !Eff::bulk_response)
+      throw ParameterError("mdr: psi_b = " + std::to_string(opt.psi_b) +
+                           " needs the bulk response compiled in (effect kBulkResponse); valid without it: psi_b = 0");
+    m.bulk.psi_b = T(opt.psi_b);
+    m.bulk.volume_floor = T(opt.volume_floor);
     return m;
   }
 
@@ -337,16 +356,90 @@ struct Mdr {
     penalty.weigh(p, pairs, nlocal);
   }
 
-  // Attaches the particles' R_o and R and allocates V and the growth sums (radius growth only).
+  // Attaches the particles' R_o and R and allocates V and the growth sums (radius growth only),
+  // and Part II's per-particle state (bulk response only; psi = 1, V_geo = V_o).
   void bind(const Particles<T, Device>& p) {
     if (Eff::radius_growth) growth.attach(p.radius0, p.radius);
+    if (Eff::bulk_response) {
+      bulk.attach(p.radius0);
+      bulk.radius = p.radius;
+      bulk.radius0 = p.radius0;
+      growth.psi = bulk.psi;  // the gate of (37): growth only while psi > psi_b
+      growth.psi_b = bulk.psi_b;
+    }
+  }
+
+  // Part II's mean surface displacement d delta-bar per particle for the next force pass (bulk
+  // response only; else a no-op), from the positions now and the contacts' history: call it
+  // before every force pass, after compute_contact_penalty, with the lists that pass evaluates.
+  // nlocal: hosts with ghost copies past nlocal (their values are the owners', copied by the
+  // host), else -1.
+  void compute_mean_surface_displacement(const Particles<T, Device>& p, const ContactList<Device>& pairs,
+                                         const ContactHistory<T, Device>& pair_history, const Walls<T, Device>& walls,
+                                         const ContactList<Device>& wall_contacts,
+                                         const ContactHistory<T, Device>& wall_history) const {
+    if (!(Eff::bulk_response && bulk.bound())) return;
+    using exec = typename Device::execution_space;
+    const Mdr m = *this;
+    const auto first = pairs.first, second = pairs.second;
+    const auto ph = pair_history.data;
+    const int nmat_ = nmat;
+    Kokkos::parallel_for(
+        "epac::mdr_mean_surface_displacement::pairs", Kokkos::RangePolicy<exec>(0, pairs.count), KOKKOS_LAMBDA(int k) {
+          int i = first(k), j = second(k);
+          if (p.gid(j) < p.gid(i)) {  // canonical orientation, as the force pass
+            const int t = i;
+            i = j;
+            j = t;
+          }
+          double delta;
+          ContactGeometry<T> g = detail::pair_geometry_exact<T, Device, false>(p, i, j, nmat_, delta);
+          m.add_mean_surface_displacement(g, HistoryRow<T, Device>{ph, k, 0});
+        });
+    if (wall_contacts.count > 0 && walls.n > 0) {
+      const auto wfirst = wall_contacts.first, wsecond = wall_contacts.second;
+      const auto wh = wall_history.data;
+      Kokkos::parallel_for(
+          "epac::mdr_mean_surface_displacement::walls", Kokkos::RangePolicy<exec>(0, wall_contacts.count),
+          KOKKOS_LAMBDA(int k) {
+            double delta;
+            const ContactGeometry<T> g = detail::wall_geometry_exact(p, walls, wfirst(k), wsecond(k), nmat_, delta);
+            m.add_mean_surface_displacement(g, HistoryRow<T, Device>{wh, k, 0});
+          });
+    }
+    mdr_finish_mean_disp(bulk);
+  }
+
+  // One contact's terms of d delta-bar: each side's (w A_c of the last pass / A_con,0 of its
+  // particle) (delta now - delta then), for touching contacts (LAMMPS skips the others).
+  KOKKOS_INLINE_FUNCTION void add_mean_surface_displacement(const ContactGeometry<T>& g,
+                                                            const HistoryRow<T, Device>& row) const {
+    if (!(g.delta > T(0))) return;
+    detail::MdrEvaluation<T> e = detail::mdr_order_sides(g);
+    if (Eff::radius_growth && growth.bound()) load_growth(e);
+    e.dside[0] = g.delta;
+    if (e.is_pair) {
+      for (int s = 0; s < 2; ++s) e.st[s].delta_p = row(side_base(s) + SideField::delta_p);
+      split_pair_overlap<false>(g, row, e);  // the force pass's geometric split, read-only
+    }
+    auto acc = bulk.mean_disp.scatter.access();
+    for (int s = 0; s < e.nsides; ++s) {
+      const int pp = e.part[s];
+      const T acon0 = bulk.acon0(pp);
+      if (acon0 == T(0)) continue;  // no contact area last pass: no weight (and no division)
+      const int b = side_base(s);
+      acc(pp) += row(b + SideField::bulk_area_w) / acon0 * (e.dside[s] - row(b + SideField::bulk_delta_last));
+    }
   }
 
   // Applies the growth sums of the last force pass: new R and V per particle, sums reset (the
   // per-thread copies of the pass are added first and cleared after: mdr_radius_growth.hpp).
   // count >= 0 updates only particles [0, count) and clears every particle's sums (count 0
   // discards the pass's sums); default: all.
+  // Part II first (psi, V_geo and A_con,0 from the pass's sums, with R before growth), then the
+  // growth, gated by psi.
   void update_radii(int count = -1) const {
+    if (Eff::bulk_response && bulk.bound()) mdr_update_bulk(bulk, bulk.radius, bulk.radius0, count);
     if (Eff::radius_growth && growth.bound()) mdr_update_radii(growth, count);
   }
 
@@ -599,12 +692,13 @@ struct Mdr {
   static KOKKOS_FORCEINLINE_FUNCTION void report_side(MdrContactOutput<T>& o, SideSums& sum,
                                                       const detail::MdrEvaluation<T>& e, int s) {
     const MdrSideResult<T>& r = e.res[s];
-    sum.F += r.F;
+    const T F = Eff::bulk_response ? r.F + e.f_bulk[s] : r.F;  // F_MDR + F_BULK (Part II)
+    sum.F += F;
     sum.a += r.a;
     sum.area += r.area;
     sum.a_adh += e.st[s].a_adh;
     o.yielded += e.st[s].yielded != T(0) ? 1 : 0;
-    o.side_force[s] = r.F;
+    o.side_force[s] = F;
     o.side_overlap[s] = e.dside[s];
     o.side_area[s] = r.area;
     o.side_delta_max[s] = r.delta_max;
@@ -622,15 +716,76 @@ struct Mdr {
       const bool side_b = (s == 0) == e.swap;  // as in set_pair_sides
       const MdrSideConstants<T>& c = side_b ? pc.side_b : pc.side_a;
       const bool plastic_loading = r.plastic && r.loading && r.F > T(0);
+      // Part II: the Christoffersen term takes the side's whole force F_MDR + F_BULK, the loading
+      // test F_MDR alone (LAMMPS's fix GRANULAR/MDR)
+      const T F = Eff::bulk_response ? r.F + e.f_bulk[s] : r.F;
       if (growth_terms.enabled)
-        mdr_growth_add_side(growth, growth_terms.access(e.is_pair, g.contact, s), e.part[s], e.R0s[s], c.inv_3kappa,
-                            r.F, e.dside[s], e.Rs[s], plastic_loading, r.plastic, st.delta_o_prev, st.eps_prev,
-                            e.R_cap[s], w);
+        mdr_growth_add_side(growth, growth_terms.access(e.is_pair, g.contact, s), e.part[s], e.R0s[s], c.inv_3kappa, F,
+                            e.dside[s], e.Rs[s], plastic_loading, r.plastic, st.delta_o_prev, st.eps_prev, e.R_cap[s],
+                            w);
       else
-        mdr_growth_add_side(growth, growth.sums.scatter.access(), e.part[s], e.R0s[s], c.inv_3kappa, r.F, e.dside[s],
+        mdr_growth_add_side(growth, growth.sums.scatter.access(), e.part[s], e.R0s[s], c.inv_3kappa, F, e.dside[s],
                             e.Rs[s], plastic_loading, r.plastic, st.delta_o_prev, st.eps_prev, e.R_cap[s], w);
     }
+    if (Eff::bulk_response && bulk.bound()) commit_bulk_side(row, w, e, s);
     store_changed(row, s, e.before[s], st, r.plastic);
+  }
+
+  // --- Part II, the bulk response (mdr_bulk_response.hpp) ---
+
+  // Each side's delta_MDR and delta_BULK from its total overlap e.dside and its particle's psi
+  // and d delta-bar (e.bulk: the sides' bulk history, advanced).
+  KOKKOS_FORCEINLINE_FUNCTION void bulk_split(const HistoryRow<T, Device>& row, detail::MdrEvaluation<T>& e) const {
+    for (int s = 0; s < e.nsides; ++s) {
+      const int b = side_base(s);
+      MdrBulkSide<T>& k = e.bulk[s];
+      k.delta_last = row(b + SideField::bulk_delta_last);
+      k.delta_mdr = row(b + SideField::bulk_delta_mdr);
+      k.delta_bulk = row(b + SideField::bulk_delta_bulk);
+      const int p = e.part[s];
+      mdr_bulk_split(e.dside[s], bulk.psi(p), bulk.psi_b, bulk.ddelta_bar(p), k);
+    }
+  }
+
+  // The sides' laws at delta_MDR, each against its flat (the flat placed by the geometric split).
+  KOKKOS_FORCEINLINE_FUNCTION void bulk_sides(const ContactGeometry<T>& g, const MdrPairConstants<T>& pc,
+                                              detail::MdrEvaluation<T>& e) const {
+    if (!e.is_pair) {
+      const T gamma_w = Eff::adhesion ? pc.gamma_a : T(0);
+      e.res[0] = mdr_side_force<Eff::plasticity, Eff::adhesion>(pc.side_a, gamma_w, xi, e.bulk[0].delta_mdr, e.Rs[0],
+                                                                e.growth_of[0], e.st[0], adhesive_radius_factor);
+      return;
+    }
+    PairSides ps;
+    set_pair_sides(ps, g, pc, e);
+    for (int s = 0; s < 2; ++s)
+      e.res[s] = mdr_side_force<Eff::plasticity, Eff::adhesion>(*ps.c[s], ps.gamma[s], xi, e.bulk[s].delta_mdr, ps.R[s],
+                                                                ps.growth[s], e.st[s], adhesive_radius_factor);
+  }
+
+  // F_BULK and A_c of each side (A_c at the total overlap; it replaces the reported area).
+  KOKKOS_FORCEINLINE_FUNCTION void bulk_forces(const MdrPairConstants<T>& pc, detail::MdrEvaluation<T>& e) const {
+    for (int s = 0; s < e.nsides; ++s) {
+      const bool side_b = e.is_pair && ((s == 0) == e.swap);  // as in set_pair_sides; a wall: side_a
+      const MdrSideConstants<T>& c = side_b ? pc.side_b : pc.side_a;
+      const int p = e.part[s];
+      e.area_c[s] = mdr_bulk_area(e.dside[s], e.Rs[s], e.st[s].yielded != T(0), e.st[s].c_A);
+      e.f_bulk[s] = mdr_bulk_force(c.kappa, bulk.acon0(p), bulk.vgeo(p), e.bulk[s].delta_bulk, e.area_c[s]);
+      e.res[s].area = e.area_c[s];
+    }
+  }
+
+  // The side's terms of A_con, A_tot and V_cap, and its bulk history.
+  KOKKOS_FORCEINLINE_FUNCTION void commit_bulk_side(const HistoryRow<T, Device>& row, T w, detail::MdrEvaluation<T>& e,
+                                                    int s) const {
+    const MdrBulkSide<T>& k = e.bulk[s];
+    mdr_bulk_add_side(bulk.sums.scatter.access(), e.part[s], w, e.area_c[s], e.Rs[s], e.dside[s], e.res[s].delta_max,
+                      k.delta_bulk);
+    const int b = side_base(s);
+    row(b + SideField::bulk_delta_last) = k.delta_last;
+    row(b + SideField::bulk_delta_mdr) = k.delta_mdr;
+    row(b + SideField::bulk_delta_bulk) = k.delta_bulk;
+    row(b + SideField::bulk_area_w) = w * e.area_c[s];
   }
 
   // The contact's values: pair means over the two sides.

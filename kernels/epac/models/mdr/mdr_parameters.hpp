@@ -149,6 +149,10 @@ struct MdrOptions {
   // Off by default: it is later work (Zunker et al. 2025), not MDR Part I. The host then calls
   // Mdr::compute_contact_penalty before every force pass.
   bool contact_penalty = false;
+  // Part II's bulk response (mdr_bulk_response.hpp): a particle whose free surface fraction psi
+  // is below psi_b takes its mean surface displacement as bulk overlap. 0 (default): off, Part I.
+  // psi_b > 0 needs the kBulkResponse effect and pair_split = geometric (Mdr::create checks).
+  double psi_b = 0.0;
   // R never exceeds radius_cap * R_o (the authors' implementation stops growth at 1.5 R_o).
   double radius_cap = 1.5;
   // Guard of the denominator of MDR (37), D = 2 pi R sum(delta_o + R - R_o) - 4 pi R^2, which is
@@ -165,6 +169,12 @@ struct MdrOptions {
     require_range("mdr: radius_cap", radius_cap, 1.0, Bound::closed, 10.0, Bound::closed);
     require_range("mdr: denominator_floor", denominator_floor, 0.0, Bound::open, 1.0, Bound::open);
     require_range("mdr: volume_floor", volume_floor, 0.0, Bound::open, 1.0, Bound::open);
+    require_range("mdr: psi_b", psi_b, 0.0, Bound::closed, 1.0, Bound::closed);
+    if (psi_b > 0.0 && pair_split != MdrPairSplit::geometric)
+      throw ParameterError(
+          "mdr: psi_b = " + std::to_string(psi_b) +
+          " (Part II's bulk response) needs pair_split = geometric (the authors' flat placement: the mean surface "
+          "displacement is computed before the force pass from each side's overlap, a closed form only there)");
     if (friction == MdrFriction::authors)
       require_range("mdr: tangential_stiffness (friction authors)", tangential_stiffness, 0.0, Bound::open,
                     std::numeric_limits<double>::max(), Bound::closed);

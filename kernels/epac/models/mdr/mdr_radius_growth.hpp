@@ -62,6 +62,9 @@ struct MdrGrowthState {
   Kokkos::View<int*, Device> guard_hits;  // cumulative counts, MdrGrowthGuard
   MdrGrowthRule rule = MdrGrowthRule::plastic_loading;
   T radius_cap = T(1.5), denominator_floor = T(0.05), volume_floor = T(0.1);
+  // Part II (Mdr::bind with kBulkResponse): growth only while psi > psi_b; empty: always
+  Kokkos::View<T*, Device> psi;
+  T psi_b = T(0);
 
   KOKKOS_INLINE_FUNCTION bool bound() const { return volume.extent(0) > 0; }
 
@@ -154,6 +157,11 @@ void mdr_update_radii(const MdrGrowthState<T, Device>& gs, int count = -1) {
         // Delta V^e of the whole particle, only when a side contributes (den > 0: each adds
         // 2 pi R delta > 0): else an elastic particle's volume recovering on unloading grew R
         if (s.rule == MdrGrowthRule::yielded_contacts && den > T(0)) num -= V_new - s.volume(p);
+        // Part II: a particle at or below psi_b (confined) does not grow (fix GRANULAR/MDR)
+        if (s.psi.extent(0) > 0 && !(s.psi_b < s.psi(p))) {
+          s.volume(p) = V_new;
+          return;
+        }
         // (37). D < 0 in normal use; near 0 under high confinement (Appendix C): floored.
         T D = den - T(4) * pi * R * R;
         const T D_max = -s.denominator_floor * T(4) * pi * R * R;

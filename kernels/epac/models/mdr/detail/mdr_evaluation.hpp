@@ -3,6 +3,7 @@
 // order, and what each step of the evaluation leaves for the next.
 #include <epac/models/contact_geometry.hpp>
 #include <epac/models/mdr/detail/mdr_side_force.hpp>
+#include <epac/models/mdr/mdr_bulk_response.hpp>
 
 namespace epac {
 namespace detail {
@@ -22,6 +23,10 @@ struct MdrEvaluation {
   MdrSideResult<T> res[2];        // the sides' results
   T dside[2] = {T(0), T(0)};      // the sides' apparent overlaps
   T R_cap[2] = {T(0), T(0)};      // MdrPairSplit::equal_pair: the sides' radii R'_s (growth caps)
+  // bulk response (Part II): the sides' bulk history, F_BULK and A_c at the total overlap
+  MdrBulkSide<T> bulk[2];
+  T f_bulk[2] = {T(0), T(0)};
+  T area_c[2] = {T(0), T(0)};
 };
 
 // Sides ordered by global id; a wall has one side (side 0 = particle i).
