@@ -12,7 +12,7 @@ of each is kept (the machine is shared: compare the ratios of one run, never abs
 across runs). Prints a markdown table and writes JSON (--json).
 
 Usage:
-  python3 bench/peers/side_by_side.py [--threads 1 2] [--repeats 3] [--laws hm jkr nan mdr mdr_growth]
+  python3 bench/peers/side_by_side.py [--threads 1 2] [--repeats 3] [--laws hm jkr nan mdr mdr_growth mdr_authors]
                                       [--precision double float] [--json FILE] [--before-epac-run EXE]
 LAMMPS is built on first use (about 2-5 min; cached in ~/.cache/lammps-peer) with the build scripts
 of the LAMMPS peer kit supplied to developers beside the checkout (PEERS below; the kit's inputs
@@ -71,6 +71,17 @@ LAWS = {
         "lammps": [("mdr", "serial", "granular mdr")],
         "epac": law_block("mdr", "yield_stress = 5.0e6\n",
                           'effects = ["plasticity", "radius_growth", "friction", "damping"]\n'),
+    },
+    # like with like: what pair.mdr runs (the authors' conventions, Part II's bulk response at
+    # psi_b 0.5, the contact penalty, growth; k_t = 2/7 E R with R = 1 mm as in the LAMMPS input)
+    "mdr_authors": {
+        "title": "MDR as LAMMPS runs it: growth, bulk response psi_b 0.5, contact penalty, authors' conventions",
+        "lammps": [("mdr", "serial", "granular mdr")],
+        "epac": law_block("mdr", "yield_stress = 5.0e6\n",
+                          'effects = ["plasticity", "radius_growth", "friction", "damping", "bulk_response"]\n'
+                          'psi_b = 0.5\ncontact_penalty = "on"\npair_split = "geometric"\ndelta_max = "running_max"\n'
+                          'damping = "authors"\nfriction = "authors"\ntangential_stiffness = 285714.2857142857\n'
+                          'yield_onset = "hertz_40"\n'),
     },
 }
 

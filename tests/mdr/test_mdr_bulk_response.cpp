@@ -9,34 +9,19 @@
 #include <epac/compute/contact_forces.hpp>
 #include <epac/models/mdr/mdr_model.hpp>
 
+#include "mdr_test_helpers.hpp"
+
 #include <cmath>
 #include <vector>
 
 using namespace epac;
+using test::mdr_material;
+using test::rigid_wall_material;
 
 namespace {
 
-Material grain() {
-  Material m;
-  m.name = "grain";
-  m.youngs_modulus = 1e8;
-  m.poisson_ratio = 0.3;
-  m.density = 1000;
-  m.yield_stress = 1e6;  // E/Y 100: yields at about 0.002 R
-  m.restitution = 1.0;
-  return m;
-}
-
-Material rigid() {
-  Material m;
-  m.name = "wall";
-  m.youngs_modulus = 1e8;
-  m.poisson_ratio = 0.3;
-  m.density = 1000;
-  m.rigid = true;
-  m.restitution = 1.0;
-  return m;
-}
+// E/Y 100: yields at about 0.002 R
+Material grain() { return mdr_material(1e8, 0.3, 1e6); }
 
 constexpr unsigned kBulkSet = kPlasticity | kRadiusGrowth | kBulkResponse;
 constexpr unsigned kPartISet = kPlasticity | kRadiusGrowth;
@@ -62,7 +47,7 @@ struct Box {
   ContactOutputs<T, D> out;
   double R;
 
-  Box(const MdrOptions& o, double radius) : model(Model::create({grain(), rigid()}, o)), R(radius) {
+  Box(const MdrOptions& o, double radius) : model(Model::create({grain(), rigid_wall_material()}, o)), R(radius) {
     Kokkos::deep_copy(p.radius, T(R));
     Kokkos::deep_copy(p.radius0, T(R));
     Kokkos::deep_copy(p.mass, T(1e-6));

@@ -120,6 +120,8 @@ struct MdrFactory : ModelFactoryBase<Mdr<T, Effects<Bits>, Device>> {
     sum.model_counters.push_back({"mdr_guard_denominator", double(hits[kMdrGuardDenominator])});
     sum.model_counters.push_back({"mdr_guard_radius_cap", double(hits[kMdrGuardRadiusCap])});
     sum.model_counters.push_back({"mdr_guard_volume", double(hits[kMdrGuardVolume])});
+    if (Effects<Bits>::bulk_response)
+      sum.model_counters.push_back({"mdr_guard_bulk_volume", double(m.bulk_volume_floor_hits())});
     if (m.growth.bound()) {
       const auto R = m.growth.radius;
       const auto R0 = m.growth.radius0;

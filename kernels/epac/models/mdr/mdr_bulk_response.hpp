@@ -49,12 +49,12 @@ template <class T, class Device>
 struct MdrBulkState {
   using view = Kokkos::View<T*, Device>;
   enum : int { kAcon = 0, kAtotSum = 1, kVcaps = 2 };
-  ParticleSum<T* [3], Device> sums;  // the force pass's A_con, A_tot's contact sum, V_cap sum
-  ParticleSum<T*, Device> mean_disp;  // the pre-pass's sum of d delta-bar
-  view acon0;                         // A_con of the last pass
-  view psi;                           // free surface fraction (1: no contact)
-  view vgeo;                          // V_geo
-  view ddelta_bar;                    // d delta-bar of this step (the pre-pass's result)
+  ParticleSum<T* [3], Device> sums;         // the force pass's A_con, A_tot's contact sum, V_cap sum
+  ParticleSum<T*, Device> mean_disp;        // the pre-pass's sum of d delta-bar
+  view acon0;                               // A_con of the last pass
+  view psi;                                 // free surface fraction (1: no contact)
+  view vgeo;                                // V_geo
+  view ddelta_bar;                          // d delta-bar of this step (the pre-pass's result)
   Kokkos::View<int*, Device> vgeo_floored;  // cumulative count of the V_geo floor
   view radius, radius0;                     // the particles' R and R_o (Mdr::bind)
   T psi_b = T(0);
@@ -119,8 +119,8 @@ KOKKOS_FORCEINLINE_FUNCTION T mdr_bulk_force(T kappa, T acon0, T vgeo, T delta_b
 
 // Force pass, one side of a contact on particle p (acc: an access object of bs.sums).
 template <class T, class Access>
-KOKKOS_FORCEINLINE_FUNCTION void mdr_bulk_add_side(const Access& acc, int p, T w, T area, T R, T delta,
-                                                   T delta_max_mdr, T delta_bulk) {
+KOKKOS_FORCEINLINE_FUNCTION void mdr_bulk_add_side(const Access& acc, int p, T w, T area, T R, T delta, T delta_max_mdr,
+                                                   T delta_bulk) {
   const T pi = constants<T>::pi;
   acc(p, 0) += w * area;
   acc(p, 1) += w * (area - T(2) * pi * R * (delta_max_mdr + delta_bulk));

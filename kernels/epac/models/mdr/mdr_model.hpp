@@ -456,6 +456,13 @@ struct Mdr {
       reduce_side_sums(p, growth_terms, pairs, pair_incidence, wall_incidence, growth.sums.target);
   }
 
+  // Cumulative count of Part II's V_geo floor (mdr_bulk_response.hpp); 0 without the bulk response.
+  int bulk_volume_floor_hits() const {
+    if (!(Eff::bulk_response && bulk.bound())) return 0;
+    auto h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), bulk.vgeo_floored);
+    return h(0);
+  }
+
   // Cumulative guard counts of the radius update (MdrGrowthGuard order); zeros without growth.
   std::array<int, kMdrGuardCount> guard_hits() const {
     std::array<int, kMdrGuardCount> out{};
