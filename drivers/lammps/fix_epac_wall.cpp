@@ -153,6 +153,15 @@ void FixEpacWall::find_contacts(const double* range, std::vector<Contact>& out) 
       Contact c;
       c.atom = i;
       c.history = history_[i][slot_[ic]];
+      // LAMMPS's wall R* = R R_w / (R + R_w) (GranularModel::check_contact); a concave radius
+      // closer than 2 R (R* > 2 R; infinite at R_w = -R) is outside the kernel's domain
+      // (epac::detail::wall_effective_radius): refused, not clamped
+      c.curvature = rc.radius;
+      if (c.curvature < 0.0 && !(-c.curvature >= 2.0 * radius[i]))
+        error->one(FLERR,
+                   "Fix epac/wall: region {} has the concave contact radius {} at atom {} of radius {} (valid: "
+                   "-contact radius >= 2 x the atom's radius)",
+                   idregion_, c.curvature, atom->tag[i], radius[i]);
       const double del[3] = {rc.delx, rc.dely, rc.delz};
       for (int d = 0; d < 3; d++) {
         c.normal[d] = del[d] / rc.r;

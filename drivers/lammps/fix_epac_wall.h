@@ -3,10 +3,12 @@
    cylinder, block, ..., moving or rotating as the region does) as a rigid wall for epac's pair
    styles (plugin; drivers/lammps/README.md). The wall acts with the pair style's own law on each
    atom of the group that touches it: every contact is a particle against the region's tangent
-   plane at the nearest surface point (MDR's rigid flat; LAMMPS's `granular mdr` treats wall
-   contacts the same way), with the particle type's material (the wall contributes no compliance;
-   friction, restitution and surface energy are the particle's unless mu, gamma or e set the
-   wall's own: epac::Material::own_surface_properties).
+   plane at the nearest surface point, with the particle-wall R* of LAMMPS's region walls (from the
+   region's contact radius R_w: R R_w / (R + R_w), R at a flat surface; concave radii need
+   -R_w >= 2 R) in the laws and the rolling arm, except MDR's normal law, which takes the wall as a
+   rigid flat (as LAMMPS's `granular mdr` does), and with the particle type's material (the wall
+   contributes no compliance; friction, restitution and surface energy are the particle's unless
+   mu, gamma or e set the wall's own: epac::Material::own_surface_properties).
    The pair style does the work in its force pass (PairEpac::compute), so that with fix epac/mdr a
    wall contact feeds the same radius-growth sums, MDR (37)-(39), as the pair contacts of that step.
    This fix keeps the per-atom contact history (up to the region's number of touching surfaces per
@@ -35,6 +37,8 @@ class FixEpacWall : public Fix {
     double point[3];     // nearest surface point
     double normal[3];    // unit normal from the wall towards the atom
     double velocity[3];  // the surface's velocity at that point
+    double curvature;    // the region's contact radius there (Region::contact[].radius: 0 flat,
+                         // < 0 concave, e.g. -2 R_cyl inside a cylinder): the contact's R*
   };
 
   FixEpacWall(class LAMMPS*, int, char**);

@@ -360,7 +360,8 @@ void PairEpac::init_style() {
   MPI_Allreduce(&onerad_[1], &maxrad_[1], atom->ntypes, MPI_DOUBLE, MPI_MAX, world);
   last_list_ = nullptr;
   // a wall's adhesive reach: the pair bound for two spheres of the type's largest radius (R* = R/2
-  // and E* = E_eff/2 give a longer JKR range than the wall's R* = R, E* = E_eff: a bound)
+  // and E* = E_eff/2 give a JKR range at least the wall's, R* <= 2 R (fix epac/wall refuses closer
+  // concave radii), E* = E_eff: a bound)
   wall_range_.assign(atom->ntypes + 1, 0.0);
   for (int t = 1; t <= atom->ntypes; t++)
     for (std::size_t f = 0; f < wall_fixes_.size(); f++) {
@@ -590,6 +591,7 @@ void PairEpac::collect_walls() {
   auto nv = Kokkos::create_mirror_view(pass.walls.normal);
   auto vel = Kokkos::create_mirror_view(pass.walls.velocity);
   auto mat = Kokkos::create_mirror_view(pass.walls.material);
+  auto curv = Kokkos::create_mirror_view(pass.walls.curvature);
   auto first = Kokkos::create_mirror_view(pass.list.first);
   auto second = Kokkos::create_mirror_view(pass.list.second);
   auto h = Kokkos::create_mirror_view(pass.history.data);
@@ -602,6 +604,7 @@ void PairEpac::collect_walls() {
       vel(k, d) = c.velocity[d];
     }
     mat(k) = atom->ntypes * (1 + wall_owner_[k]) + type[c.atom] - 1;
+    curv(k) = c.curvature;
     first(k) = c.atom;
     second(k) = k;
     for (int q = 0; q < history_size_; q++) h(k, q) = c.history[q];
@@ -610,6 +613,7 @@ void PairEpac::collect_walls() {
   Kokkos::deep_copy(pass.walls.normal, nv);
   Kokkos::deep_copy(pass.walls.velocity, vel);
   Kokkos::deep_copy(pass.walls.material, mat);
+  Kokkos::deep_copy(pass.walls.curvature, curv);
   Kokkos::deep_copy(pass.list.first, first);
   Kokkos::deep_copy(pass.list.second, second);
   if (history_size_ > 0) Kokkos::deep_copy(pass.history.data, h);

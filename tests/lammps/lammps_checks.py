@@ -15,6 +15,13 @@ CHECK is one of
                   either), with and without the dashpot: a pair (in.rolling_pair) through slip and
                   stick to round-off over 2,000 steps, and the settled packing with every atom
                   spinning (random omega up to 200 rad/s): torques at steps 0 and 1 to round-off.
+  wall_curvature  fix epac/wall against LAMMPS's fix wall/gran/region on a cylinder's inside
+                  (in.wall_curvature: R = 1 mm, R_c = 4 mm; LAMMPS's wall R* = 8/7 R from the
+                  region's contact radius -2 R_c), epac/hertz_mindlin ... rolling sds against
+                  `granular hertz/material ... rolling sds` (no sliding friction, no damping): the
+                  sphere held against the wall and spinning (wall force, torque, omega) and bouncing
+                  off it while spinning (positions, velocities, omega), every 10 steps to 2,000,
+                  to round-off. With R* = R at the wall (before 0.x) both depart by percents.
   ranks           1 against 2 MPI ranks: the same thermo output (12 printed digits) for
                   epac/hertz_mindlin with damping and friction (newton on and off), epac/mdr
                   with plasticity, adhesion and damping, and epac/mdr with friction, fix epac/mdr
@@ -204,6 +211,52 @@ def rolling_vs_granular(args):
               f"(LAMMPS's history sign on reordered pairs)")
 
 
+def wall_curvature(args):
+    print("wall_curvature: fix epac/wall vs fix wall/gran/region inside a cylinder (R* with the wall's curvature)")
+    from authors_examples import AUTHORS
+    infile = os.path.join(HERE, "in.wall_curvature")
+    R, Rc = 1e-3, 4e-3
+    print(f"  info R* / R at the wall: LAMMPS {(-2 * Rc) / (R - 2 * Rc):.6f} (region contact radius -2 R_c)")
+    # Hertz: LAMMPS's wall E* is E / (2 (1 - nu^2)) (the wall as the particle's material), epac's rigid
+    # wall's E / (1 - nu^2): LAMMPS's wall gets 2 E. No sliding friction, no damping.
+    roll = "rolling sds 1000 0.01 0.1"
+    hertz = ("Hertz", GRANULAR_HM + " " + roll, "hertz/material 2e7 0 0.3 tangential linear_nohistory 0 0 " + roll,
+             "epac/hertz_mindlin", EPAC_HM + " " + roll, "0")
+    # MDR with the authors' choices (the tableting example's materials, R = 1 mm): friction 0.1 with
+    # a constant k_t, damping, plasticity, radius growth; LAMMPS's MDR takes the wall as a rigid flat
+    # (radi) in its normal law and damping and R* in the rolling arm, and so does epac
+    kt = 2 / 7 * 5e6 * R
+    mdr = f"5e6 0.4 1.9e5 0 0 0.5"
+    mroll = "rolling sds 4050 0 0.6"
+    lmdr = f"mdr {mdr} tangential linear_history {kt} 0 0.1 {mroll} damping none"
+    mdr_case = ("MDR", lmdr, lmdr, "epac/mdr " + " ".join(f"{k} {v}" for k, v in AUTHORS.items()),
+                f"{mdr} mu 0.1 kt {kt} {mroll}", "1")
+    for law, lcoeffs, wallcoeffs, estyle, ecoeffs, grow in (hertz, mdr_case):
+        for hold, label, cols in ((1, "held against the wall, spinning",
+                                   {"wall force": (6, 7, 8), "torque": (9, 10, 11), "omega": (12, 13, 14)}),
+                                  (0, "bouncing off the wall, spinning",
+                                   {"position": (0, 1, 2), "velocity": (3, 4, 5), "omega": (12, 13, 14),
+                                    "torque": (9, 10, 11)})):
+            label = f"{law}, {label}"
+            runs = {}
+            for name, style, coeffs in (("lammps", "granular", lcoeffs), ("epac", estyle, ecoeffs)):
+                tag = f"wall_{law}_{name}_{hold}"
+                lmp(args, variables=[("style", style), ("coeffs", coeffs), ("wall", name), ("wallcoeffs", wallcoeffs),
+                                     ("grow", grow if name == "epac" else "0"), ("hold", str(hold)), ("dump", tag),
+                                     ("every", "10")], tag=tag, infile=infile)
+                runs[name] = {s: read_dump(os.path.join(args.work, f"{tag}.{s}.dump")) for s in range(0, 2001, 10)}
+            for what, c in cols.items():
+                # per step relative to the largest magnitude over the run (a column passing through 0)
+                big = max(max(abs(runs["lammps"][s][1][k]) for k in c) for s in runs["lammps"])
+                if what == "position":
+                    big = R  # positions: relative to the radius (their magnitude is the box's)
+                d = max(max(abs(runs["epac"][s][1][k] - runs["lammps"][s][1][k]) for k in c) for s in runs["epac"])
+                rel = d / big if big > 0 else (0.0 if d == 0 else math.inf)
+                check(rel <= 1e-12, f"{label}: every 10 steps to 2,000, max |{what} epac - LAMMPS| / max |{what}| = "
+                                    f"{rel:.1e} (< 1e-12; max |{what}| {big:.3e})")
+            touching = sum(1 for s in runs["lammps"] if runs["lammps"][s][1][6] != 0.0)
+            print(f"  info {label}: wall force nonzero at {touching} of {len(runs['lammps'])} dumps")
+
 def thermo_equal(a, b, what):
     steps = sorted(set(a) & set(b))
     same = all(a[s] == b[s] for s in steps)
@@ -282,7 +335,7 @@ def main():
     ap.add_argument("--plugin", required=True)
     ap.add_argument("--mpiexec", default="")
     ap.add_argument("--work", required=True)
-    ap.add_argument("check", choices=["hm_vs_granular", "rolling_vs_granular", "ranks", "restart"])
+    ap.add_argument("check", choices=["hm_vs_granular", "rolling_vs_granular", "wall_curvature", "ranks", "restart"])
     args = ap.parse_args()
     args.plugin = os.path.abspath(args.plugin)
     if os.path.isdir(args.work):

@@ -83,6 +83,21 @@ KOKKOS_FORCEINLINE_FUNCTION ContactGeometry<T> pair_geometry_exact(const Particl
   return g;
 }
 
+// R* of a particle of radius R_i against a wall of curvature R_w (Walls::curvature), as LAMMPS
+// computes it for its granular walls (GranularModel::check_contact: Reff = radi radj / (radi +
+// radj), radi where radj = 0). Domain: R_w = 0 (flat: R_i), R_w > 0 (convex: R* < R_i) and
+// R_w <= -2 R_i (concave: R_i < R* <= 2 R_i). Closer concave radii (the sphere nearly conforming
+// to the surface; R* is infinite at R_w = -R_i and negative beyond) are outside a point contact:
+// hosts refuse them (validate(particles, walls, model), fix epac/wall), and the kernel clamps
+// R_w to -2 R_i there (R* = 2 R_i) so that a radius grown past the validated one (MDR growth)
+// keeps R* finite and positive.
+template <class T>
+KOKKOS_FORCEINLINE_FUNCTION T wall_effective_radius(T R_i, T R_w) {
+  if (R_w == T(0)) return R_i;
+  const T Rw = (R_w < T(0) && R_w > T(-2) * R_i) ? T(-2) * R_i : R_w;
+  return R_i * Rw / (R_i + Rw);
+}
+
 template <class T, class Device>
 KOKKOS_FORCEINLINE_FUNCTION ContactGeometry<T> wall_geometry_exact(const Particles<T, Device>& p,
                                                                    const Walls<T, Device>& w, int i, int wl, int nmat,
@@ -99,7 +114,7 @@ KOKKOS_FORCEINLINE_FUNCTION ContactGeometry<T> wall_geometry_exact(const Particl
   g.R_j = T(0);
   delta = P(g.R_i) - dist;
   g.delta = T(delta);
-  g.R_eff = g.R_i;
+  g.R_eff = wall_effective_radius(g.R_i, w.curvature(wl));
   g.m_eff = p.mass(i);
   return g;
 }
@@ -141,7 +156,14 @@ KOKKOS_FORCEINLINE_FUNCTION void finish_contact(const Model& model, const Conv& 
   const Vec3<T> v_c = v_rel - cross(w_arm, g.n);
   const T vn = dot(v_c, g.n);
   g.delta_dot = -vn;
-  const NormalForce<T> nf = model.normal(g, row);
+  NormalForce<T> nf;
+  if constexpr (!IsPair && wall_normal_law_on_flat<Model>::value) {
+    ContactGeometry<T> flat = g;  // MDR: the wall as a rigid flat (models/contact_conventions.hpp)
+    flat.R_eff = g.R_i;
+    nf = model.normal(flat, row);
+  } else {
+    nf = model.normal(g, row);
+  }
   const auto trow = row.shifted(Model::normal_history_size);
   const auto rrow = trow.shifted(Eff::friction ? 3 : 0);  // rolling resistance's fields
   if (!nf.active) {

@@ -8,6 +8,8 @@
 // `type = ContactConventions` and `of(model)` (models/mdr/mdr_model.hpp: from MdrOptions, the
 // conventions of the MDR authors' code, LAMMPS granular mdr).
 
+#include <type_traits>
+
 namespace epac {
 
 // The generic behaviour, fixed at compile time.
@@ -32,5 +34,18 @@ struct contact_conventions {
   using type = GenericContactConventions;
   static type of(const Model&) { return {}; }
 };
+
+// Laws whose normal law treats every wall as a rigid flat, whatever the wall's curvature
+// (Walls::curvature): LAMMPS's granular mdr takes R = radi at a wall contact, in its damping's R*
+// too. The kernel gives their normal() R_eff = R_i at a wall; its rolling arm keeps the wall's R*
+// (LAMMPS's Reff, which its rolling sub-model uses with every normal law). The other laws see the
+// wall's R* everywhere (LAMMPS's hertz, hertz/material, dmt and jkr take Reff from the wall's
+// radius). Mdr is declared here, not included: its header includes this one.
+template <class Model>
+struct wall_normal_law_on_flat : std::false_type {};
+template <class T, class Eff, class Device>
+struct Mdr;
+template <class T, class Eff, class Device>
+struct wall_normal_law_on_flat<Mdr<T, Eff, Device>> : std::true_type {};
 
 }  // namespace epac

@@ -17,7 +17,8 @@ struct ContactGeometry {
   T delta = 0;             // overlap R_i + R_j - distance (pairs) or R_i - distance (walls)
   T delta_dot = 0;         // d(delta)/dt, positive while approaching
   T R_i = 0, R_j = 0;      // current radii (R_j = 0 for walls)
-  T R_eff = 0;             // R_i R_j / (R_i + R_j), or R_i for walls
+  T R_eff = 0;             // R_i R_j / (R_i + R_j); walls: R_i R_w / (R_i + R_w) with the wall's
+                           // curvature R_w (Walls::curvature), R_i at a flat wall
   T m_eff = 0;             // m_i m_j / (m_i + m_j), or m_i for walls
   bool i_is_first = true;  // gid_i < gid_j: fixes per-side history order for side-based laws
                            // (always true in the pair kernel, which evaluates pairs in that order)

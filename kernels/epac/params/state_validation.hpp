@@ -91,15 +91,17 @@ void validate(const Particles<T, Device>& p, int nmat) {  // host
 
 // Walls against a model with `nmat` materials: material in [0, nmat) (a wall needs its own
 // entry in the material list, usually rigid), unit normals (| |n| - 1 | <= 1e-6; the laws use n
-// as given), finite point and velocity.
+// as given), finite point, velocity and curvature.
 template <class T, class Device>
 void validate(const Walls<T, Device>& w, int nmat) {  // host
   using namespace state_detail;
   const auto mat = host_copy(w.material);
   const auto pt = host_copy(w.point);  // double, the others T: declarations of their own
   const auto n = host_copy(w.normal), v = host_copy(w.velocity);
+  const auto c = host_copy(w.curvature);  // T* (not T*[3]): a declaration of its own
   for (int k = 0; k < w.n; ++k) {
     check_material("walls.material", k, mat(k), nmat);
+    check_finite("walls.curvature", k, c(k));
     for (int d = 0; d < 3; ++d) {
       check_finite("walls.point", k, pt(k, d));
       check_finite("walls.velocity", k, v(k, d));
@@ -116,10 +118,22 @@ template <class T, class Device, class Model>
 void validate(const Particles<T, Device>& p, const Model& model) {  // host
   validate(p, model.nmat);
 }
+// With walls: a concave wall (curvature R_w < 0) needs -R_w >= 2 R_i for the largest particle
+// (R* <= 2 R_i, the domain of the wall's R*: compute/contact_forces.hpp wall_effective_radius).
 template <class T, class Device, class Model>
 void validate(const Particles<T, Device>& p, const Walls<T, Device>& w, const Model& model) {  // host
   validate(p, model.nmat);
   validate(w, model.nmat);
+  using namespace state_detail;
+  const auto r = host_copy(p.radius);
+  const auto c = host_copy(w.curvature);
+  double r_max = 0;
+  for (int i = 0; i < p.n; ++i) r_max = std::fmax(r_max, double(r(i)));
+  for (int k = 0; k < w.n; ++k)
+    if (c(k) < T(0) && !(-double(c(k)) >= 2.0 * r_max))
+      fail("walls.curvature", k, str(c(k)),
+           "(-inf, -2 R_max] U [0, inf) (R_max = " + str(r_max) +
+               ", the largest particle radius: a concave wall's R* <= 2 R_i)");
 }
 
 }  // namespace epac
