@@ -2,7 +2,9 @@
    drivers/lammps/README.md). The fix holds the per-atom state the growth needs between steps, the
    initial radius R_o and the volume V of (39), in an internal fix property/atom (so it migrates
    with atoms, reaches ghosts at borders and goes into restart files, as LAMMPS's
-   fix_granular_mdr.cpp does), and forward-communicates the grown radius and V to ghosts. The
+   fix_granular_mdr.cpp does), and forward-communicates the grown radius and V to ghosts; with
+   pair_coeff psi_b > 0 also Part II's psi, V_geo and A_con (a second internal fix property/atom)
+   and, before each force pass, the mean surface displacement. The
    pair style does the work (PairEpac::compute): it compiles its engine with the growth effect
    when this fix exists, applies the growth of each force pass to local atoms and calls
    forward_comm(this).

@@ -28,7 +28,7 @@ namespace LAMMPS_NS {
 
 class FixEpacWall : public Fix {
  public:
-  static constexpr int kMaxHistory = 32;  // history fields per contact (epac's laws use at most 21)
+  static constexpr int kMaxHistory = 32;  // history fields per contact (MDR with every effect, rolling and Part II: 32)
 
   // One touching surface of one local atom in this pass.
   struct Contact {

@@ -9,11 +9,12 @@ the upper punch to 67% of the die height and released, ejected by the lower punc
 float; it prints the upper and lower punch forces against the upper punch displacement. Friction
 0.7 between particles, 0.1 and no adhesion at the walls, CoR 0.5, psi_b 0.5, `rolling sds`.
 
-Two of its features are outside epac's MDR (Part I): Part II's bulk response (psi_b 0.5, central to
-a die compaction) and rolling resistance. Every run here switches both off (psi_b 0, no `rolling
-sds`); everything else is the shipped input, so this compares the two codes' MDR on the authors'
-scene, not the authors' tableting result. A third feature, LAMMPS's contact penalty (later work,
-compare_mdr_triaxial.py), is switched off in LAMMPS by the diagnostic preload (needs --lammps-src).
+The asserted check (--variant part1) switches two features off in both codes, Part II's bulk
+response (psi_b 0) and rolling resistance (no `rolling sds`); everything else is the shipped input.
+epac has both now (--variant shipped runs them), but as shipped the comparison is not inside the
+nudged ensemble yet (drivers/lammps/README.md). A third feature, LAMMPS's contact penalty (later
+work, compare_mdr_triaxial.py), is switched off in LAMMPS by the diagnostic preload (needs
+--lammps-src).
 
 The scene is chaotic: the packing left by settling decides the compression curve. Moving one atom
 of 200 by 1e-9 of its radius before the run changes LAMMPS's own punch forces by several percent of
@@ -38,6 +39,8 @@ Printed: D per phase, epac against LAMMPS with its contact penalty, and the lowe
 the end, where epac stays systematically below LAMMPS (0.20 N against 0.33-0.35 N: the ejected
 tablet's grip on the die; cause not found, see drivers/lammps/README.md).
 
+--variant shipped runs the input as shipped in both codes (psi_b 0.5: epac's Part II bulk response,
+mdr_bulk_response.hpp; rolling sds; the contact penalty), otherwise as penalty_rolling below.
 --variant penalty_rolling keeps the shipped input's rolling resistance and LAMMPS's contact
 penalty (only psi_b 0 remains: Part II is not in epac): the reference and the ensemble are LAMMPS
 as shipped but for psi_b (no preload), and epac adds contact_penalty on and pair_coeff's rolling sds
@@ -65,11 +68,12 @@ def sub(text, pattern, repl, count, what):
     return out
 
 
-def common(shipped, nudge_atom=0, radius=None, rolling=False):
-    """The shipped input with psi_b 0, no rolling (unless rolling), no dumps; nudge_atom > 0 moves that
-    atom by 1e-9 R."""
+def common(shipped, nudge_atom=0, radius=None, rolling=False, keep_psi_b=False):
+    """The shipped input with psi_b 0 (unless keep_psi_b), no rolling (unless rolling), no dumps;
+    nudge_atom > 0 moves that atom by 1e-9 R."""
     s = re.sub(r"^dump", "#dump", shipped, flags=re.M)
-    s = sub(s, r"^variable psi_b\s+equal .*$", "variable psi_b equal 0.0", 1, "psi_b")
+    if not keep_psi_b:
+        s = sub(s, r"^variable psi_b\s+equal .*$", "variable psi_b equal 0.0", 1, "psi_b")
     if not rolling:
         s = sub(s, r" rolling sds \$\{k_roll\} \$\{gamma_roll\} \$\{mu_roll\}", "", 2, "rolling sds")
     if nudge_atom:
@@ -79,15 +83,17 @@ def common(shipped, nudge_atom=0, radius=None, rolling=False):
     return s
 
 
-def epac_input(shipped, plugin, rolling=False, nudge_atom=0, radius=None):
-    s = common(shipped, nudge_atom, radius)  # (rolling: added below in epac's pair_coeff form)
+def epac_input(shipped, plugin, rolling=False, nudge_atom=0, radius=None, keep_psi_b=False):
+    # (rolling: added below in epac's pair_coeff form; psi_b: the input's variable, 0 unless kept)
+    s = common(shipped, nudge_atom, radius, keep_psi_b=keep_psi_b)
     choices = dict(AUTHORS, contact_penalty="on") if rolling else AUTHORS
     opts = " ".join(f"{k} {v}" for k, v in choices.items())
     s = sub(s, r"^pair_style granular$", f"plugin load {plugin}\npair_style epac/mdr {opts}\nfix epac_growth all epac/mdr",
             1, "pair_style")
     s = sub(s, r"^pair_coeff \* \* mdr \$\{YoungsModulus\} \$\{PoissonsRatio\} \$\{YieldStress\} \$\{SurfaceEnergy\} "
                r"\$\{psi_b\} \$\{CoR\} tangential linear_history \$\{kt\} \$\{xgammat\} \$\{mu_s\} damping none$",
-            "pair_coeff * * ${YoungsModulus} ${PoissonsRatio} ${YieldStress} ${SurfaceEnergy} 0 ${CoR} mu ${mu_s} kt ${kt}" +
+            "pair_coeff * * ${YoungsModulus} ${PoissonsRatio} ${YieldStress} ${SurfaceEnergy} ${psi_b} ${CoR} mu ${mu_s} "
+            "kt ${kt}" +
             (" rolling sds ${k_roll} ${gamma_roll} ${mu_roll}" if rolling else ""),
             1, "pair_coeff")
     # the walls' k_t is the particles' (kt_wall = kt in the input): one k_t for every contact
@@ -129,27 +135,30 @@ def main():
     ap.add_argument("--lammps-src", required=True, help="LAMMPS's src folder (the no-penalty diagnostic)")
     ap.add_argument("--members", type=int, default=6, help="perturbed LAMMPS runs in the ensemble")
     ap.add_argument("--factor", type=float, default=1.5)
-    ap.add_argument("--variant", choices=("part1", "penalty_rolling"), default="part1")
+    ap.add_argument("--variant", choices=("part1", "penalty_rolling", "shipped"), default="part1")
     ap.add_argument("--epac-members", type=int, default=0,
                     help="also run epac with atom k (k = 1..N) moved by 1e-9 R and print its spread (not asserted)")
     args = ap.parse_args()
-    rolling = args.variant == "penalty_rolling"
+    rolling = args.variant in ("penalty_rolling", "shipped")
+    keep = args.variant == "shipped"  # psi_b 0.5 as shipped: Part II's bulk response in both
     shipped = prepare(args, INPUT, "epac_tableting_")
     m = re.search(r"^variable atomRadius\s+equal\s+(\S+)\*(\S+)$", shipped, flags=re.M)
     if not m:
         sys.exit(f"{INPUT}: no 'variable atomRadius equal A*B' line")
     radius = float(m.group(1)) * float(m.group(2))
     nopen = None if rolling else build_no_penalty(args)
-    ref = run(args, "lammps", common(shipped, rolling=rolling), preload=nopen)
-    members = [run(args, f"lammps_nudge{k}", common(shipped, k, radius, rolling), preload=nopen)
+    ref = run(args, "lammps", common(shipped, rolling=rolling, keep_psi_b=keep), preload=nopen)
+    members = [run(args, f"lammps_nudge{k}", common(shipped, k, radius, rolling, keep), preload=nopen)
                for k in range(1, args.members + 1)]
     # the other LAMMPS run printed: with the penalty (part1), without rolling (penalty_rolling)
     other = run(args, "lammps_other", common(shipped))
-    epac = run(args, "epac", epac_input(shipped, args.plugin, rolling))
+    epac = run(args, "epac", epac_input(shipped, args.plugin, rolling, keep_psi_b=keep))
     if any(len(r) != len(ref) for r in members + [epac, other]):
         sys.exit("runs printed different numbers of steps")
-    other_name = "LAMMPS without rolling (with its penalty)" if rolling else "LAMMPS with its contact penalty"
-    what = ("psi_b 0, rolling sds and the contact penalty in both" if rolling else
+    other_name = ("LAMMPS with psi_b 0, without rolling (with its penalty)" if keep else
+                  "LAMMPS without rolling (with its penalty)" if rolling else "LAMMPS with its contact penalty")
+    what = ("as shipped: psi_b 0.5, rolling sds and the contact penalty in both" if keep else
+            "psi_b 0, rolling sds and the contact penalty in both" if rolling else
             "psi_b 0, no rolling), reference: LAMMPS without its contact penalty")
     print(f"{INPUT} ({what}; D = max |F - F_ref| / "
           f"peak |F_ref|; ensemble: {args.members} runs with one atom moved by 1e-9 R ({1e-9 * radius:.1e} m)")
@@ -182,7 +191,7 @@ def main():
           f"{min(m[-1][2] for m in members):.4f}-{max(m[-1][2] for m in members):.4f}, epac {epac[-1][2]:.4f}; "
           f"{other_name} {other[-1][2]:.4f}")
     if args.epac_members:
-        runs = [epac] + [run(args, f"epac_nudge{k}", epac_input(shipped, args.plugin, rolling, k, radius))
+        runs = [epac] + [run(args, f"epac_nudge{k}", epac_input(shipped, args.plugin, rolling, k, radius, keep))
                          for k in range(1, args.epac_members + 1)]
         print(f"  epac with atom k = 0..{args.epac_members} moved by 1e-9 R (0: not moved), peak upper punch force / "
               f"lower punch force at the end [N]: " + ", ".join(f"{peak(r):.2f} / {r[-1][2]:.3f}" for r in runs) +
