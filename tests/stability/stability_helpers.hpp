@@ -62,7 +62,9 @@ struct MakeMdr {
 };
 template <class T>
 struct MakeMdrGrowth {
-  using M = Mdr<T, Effects<kAllEffects>>;
+  // Part I with every effect: kAllEffects gained Part II's kBulkResponse (opt-in, psi_b > 0, and
+  // its own pre-pass per step), which this harness does not drive
+  using M = Mdr<T, Effects<kAllEffects & ~kBulkResponse>>;
   static constexpr const char* name = "mdr+growth";
   static M make(const std::vector<Material>& m) { return M::create(m); }
 };
