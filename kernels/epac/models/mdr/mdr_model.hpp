@@ -188,7 +188,9 @@ struct Mdr {
     for (int s = 0; s < e.nsides; ++s) e.st[s] = load_side_at_step_start<Write>(row, s, e.a_adh_old[s]);
     e.dside[0] = g.delta;
     if (e.is_pair) o.delta_max = split_pair_overlap<Write>(g, row, e);
-    const bool bulky = Eff::bulk_response && bulk.bound();
+    // psi_b 0: Part I exactly, with the configured pair split (the bulk path is the geometric
+    // split's, which Mdr::create requires only for psi_b > 0)
+    const bool bulky = bulk_active();
     if (bulky) bulk_split(row, e);  // delta_MDR per side (e.bulk), Part II
 
     // the sides' results: a pair's from the balanced split (detail/mdr_pair_balance.hpp, the
@@ -734,11 +736,15 @@ struct Mdr {
         mdr_growth_add_side(growth, growth.sums.scatter.access(), e.part[s], e.R0s[s], c.inv_3kappa, F, e.dside[s],
                             e.Rs[s], plastic_loading, r.plastic, st.delta_o_prev, st.eps_prev, e.R_cap[s], w);
     }
-    if (Eff::bulk_response && bulk.bound()) commit_bulk_side(row, w, e, s);
+    if (bulk_active()) commit_bulk_side(row, w, e, s);
     store_changed(row, s, e.before[s], st, r.plastic);
   }
 
   // --- Part II, the bulk response (mdr_bulk_response.hpp) ---
+
+  KOKKOS_FORCEINLINE_FUNCTION bool bulk_active() const {
+    return Eff::bulk_response && bulk.bound() && bulk.psi_b > T(0);
+  }
 
   // Each side's delta_MDR and delta_BULK from its total overlap e.dside and its particle's psi
   // and d delta-bar (e.bulk: the sides' bulk history, advanced).
