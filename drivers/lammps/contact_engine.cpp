@@ -77,9 +77,9 @@ struct BulkOf<Mdr<double, Eff>> {
     }
     if (walls && walls->list.count > 0)
       m.compute_mean_surface_displacement(p, pairs, history, walls->walls, walls->list, walls->history);
-    else
-      m.compute_mean_surface_displacement(p, pairs, history, Walls<double>(), ContactList<>(0),
-                                          ContactHistory<double>(0, 0));
+    else  // no walls: empty (unallocated) views, nothing built per pass
+      m.compute_mean_surface_displacement(p, pairs, history, Walls<double>(), ContactList<>(),
+                                          ContactHistory<double>());
   }
 };
 

@@ -81,13 +81,14 @@ ContactList<D> list_of(const std::vector<std::array<int, 2>>& pairs) {
 
 // The weights of `pairs` (penalty on).
 template <class T, class D>
-std::vector<double> weights(const Scene& s, const std::vector<std::array<int, 2>>& pairs, double box = 0.0) {
+std::vector<double> weights(const Scene& s, const std::vector<std::array<int, 2>>& pairs, double box = 0.0,
+                            int nlocal = -1) {
   MdrOptions o;
   o.contact_penalty = true;
   auto m = Mdr<T, Effects<kPlasticity>, D>::create({grain()}, o);
   const auto p = particles_of<T, D>(s, box);
   const auto c = list_of<D>(pairs);
-  m.compute_contact_penalty(p, c);
+  m.compute_contact_penalty(p, c, nlocal);
   auto w = test::to_host(m.penalty.weight);
   std::vector<double> out;
   for (std::size_t k = 0; k < pairs.size(); ++k) out.push_back(double(w(k)));
@@ -192,12 +193,10 @@ TEMPLATE_LIST_TEST_CASE("contact penalty: a triangle's longest side in closed fo
   }
 }
 
-TEMPLATE_LIST_TEST_CASE("contact penalty: many triangles on one contact (both of the kernel's paths)", "[mdr][penalty]",
-                        test::Backends) {
+TEMPLATE_LIST_TEST_CASE("contact penalty: many triangles on one contact", "[mdr][penalty]", test::Backends) {
   using D = TestType;
   // a and b on x, N particles on a ring in the middle plane: N triangles on ab, each at the same
-  // alpha = 2 atan((L/2) / rho): w = 1 - N term(alpha). The kernel keeps up to 8 terms in one walk
-  // and adds more in rounds: N = 6 and N = 12 take one path each.
+  // alpha = 2 atan((L/2) / rho): w = 1 - N term(alpha).
   const double R = 1e-3, L = 1.98e-3, rho = 1.414e-3;
   const double alpha = 2.0 * std::atan(0.5 * L / rho);
   for (int N : {6, 12}) {
@@ -255,6 +254,45 @@ TEMPLATE_LIST_TEST_CASE("contact penalty: a dense random cluster against brute f
     }
     CHECK(weighted > 20);  // the cluster is dense enough to test something
   }
+}
+
+TEMPLATE_LIST_TEST_CASE("contact penalty: ghost copies (a host's particles past nlocal) against brute force",
+                        "[mdr][penalty]", test::Backends) {
+  using D = TestType;
+  // A host with ghosts lists only the pairs with a local end, so a ghost's range of partners is
+  // partial: a contact with a ghost end must walk its local end (and measure the ghost side
+  // itself); a contact with two local ends finds its triangles in both ranges. Every weight must
+  // still be the brute force's over all particles.
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  Scene s;
+  const int n = 60, nlocal = 35;
+  for (int i = 0; i < n; ++i) {
+    s.x.push_back({4e-3 * u(rng), 4e-3 * u(rng), 4e-3 * u(rng)});
+    s.R.push_back(0.5e-3 + 0.5e-3 * u(rng));
+  }
+  std::vector<std::array<int, 2>> pairs;
+  for (int i = 0; i < n; ++i)
+    for (int j = i + 1; j < n; ++j)
+      if (i < nlocal || j < nlocal) pairs.push_back((i + j) % 3 ? std::array<int, 2>{j, i} : std::array<int, 2>{i, j});
+  const auto w = weights<double, D>(s, pairs, 0.0, nlocal);
+  const auto ref = brute_force(s, pairs, 0.0);
+  int weighted_ghost = 0, weighted_local = 0;
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    INFO("pair " << pairs[k][0] << " " << pairs[k][1]);
+    CHECK(w[k] == Approx(ref[k]).margin(1e-13));
+    const bool ghost = pairs[k][0] >= nlocal || pairs[k][1] >= nlocal;
+    (ghost ? weighted_ghost : weighted_local) += w[k] < 1.0 ? 1 : 0;
+  }
+  CHECK(weighted_ghost > 10);  // both paths weigh something
+  CHECK(weighted_local > 10);
+  // every pair listed and no ghosts (nlocal -1): the same weights on the pairs of both lists, bit
+  // for bit (both paths meet the same triangles in the same order)
+  std::vector<std::array<int, 2>> every = pairs;
+  for (int i = nlocal; i < n; ++i)
+    for (int j = i + 1; j < n; ++j) every.push_back({i, j});
+  const auto all_local = weights<double, D>(s, every, 0.0, -1);
+  for (std::size_t k = 0; k < pairs.size(); ++k) CHECK(all_local[k] == w[k]);
 }
 
 TEMPLATE_LIST_TEST_CASE("contact penalty: the MDR force and damping of a weighted contact times w", "[mdr][penalty]",

@@ -351,8 +351,8 @@ struct Mdr {
   void compute_contact_penalty(const Particles<T, Device>& p, const ContactList<Device>& pairs, int nlocal = -1,
                                std::int64_t list_stamp = -1) {
     if (!penalty.on) return;
-    if (list_stamp < 0 || list_stamp != penalty.indexed_stamp) {
-      penalty.index(pairs, p.n);
+    if (list_stamp < 0 || list_stamp != penalty.indexed_stamp || nlocal != penalty.indexed_nlocal) {
+      penalty.index(pairs, p, nlocal);
       penalty.indexed_stamp = list_stamp;
     }
     penalty.weigh(p, pairs, nlocal);
