@@ -22,7 +22,7 @@ const std::vector<ModelEntry>& model_registry() {
        {{"xi", 1.0, Bound::closed, 3.0, Bound::closed, true, 1.0},  // MDR (15): 1 or 3 (checked)
         choice_key("growth_rule", {"plastic_loading", "yielded_contacts"}, 0),
         choice_key("yield_onset", {"elastic_law", "hertz_40"}, 0),
-        choice_key("pair_split", {"equal_pair", "balanced", "geometric"}, 0),
+        choice_key("pair_split", {"equal_pair", "balanced", "geometric", "geometric_authors"}, 0),
         choice_key("delta_max", {"paper_19", "running_max"}, 0),
         choice_key("damping", {"restitution_exact", "authors"}, 0),
         choice_key("friction", {"mindlin", "authors"}, 0),

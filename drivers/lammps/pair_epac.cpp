@@ -86,14 +86,14 @@ void PairEpac::allocate() {
   psi_b_.assign(n, 0.0);
 }
 
-// pair_style epac/<law> [pair_split equal_pair|balanced|geometric] [delta_max paper_19|running_max]
+// pair_style epac/<law> [pair_split equal_pair|balanced|geometric|geometric_authors] [delta_max paper_19|running_max]
 // [damping restitution_exact|authors] [friction mindlin|authors] [yield_onset elastic_law|hertz_40]
 // [surface_energy_share series|each_side_full] [adhesive_radius paper|authors]
 // [release critical_overlap|zero_overlap] [contact_penalty off|on] (epac/mdr only): pair_split
 // makes each side a side of the equivalent equal pair (equal_pair, the default: Hertz with E* and
 // R*, same-material similarity, passive), each particle's own sphere where the sides' scaled forces
 // balance (balanced, the default until 0.x) or the authors' radical plane (geometric; not
-// passive), epac::MdrPairSplit; delta_max is MDR (19)
+// passive; geometric_authors: with the authors' own unloading path), epac::MdrPairSplit; delta_max is MDR (19)
 // (default) or the running maximum of the apparent overlap (the authors' code), epac::MdrDeltaMax;
 // damping and friction: epac's conventions or the authors' code's (epac::MdrDamping, MdrFriction;
 // friction authors = LAMMPS's `tangential linear_history kt 0 mu`, k_t from pair_coeff's kt);
@@ -120,7 +120,7 @@ void PairEpac::settings(int narg, char** arg) {
     int* value;
     std::vector<const char*> choices;
   };
-  const Keyword keys[] = {{"pair_split", &pair_split_, {"equal_pair", "balanced", "geometric"}},
+  const Keyword keys[] = {{"pair_split", &pair_split_, {"equal_pair", "balanced", "geometric", "geometric_authors"}},
                           {"delta_max", &delta_max_, {"paper_19", "running_max"}},
                           {"damping", &damping_, {"restitution_exact", "authors"}},
                           {"friction", &friction_, {"mindlin", "authors"}},
@@ -135,12 +135,13 @@ void PairEpac::settings(int narg, char** arg) {
       if (std::strcmp(arg[k], kw.name) == 0) key = &kw;
     if (!key || law_ != Law::mdr || k + 1 >= narg)
       error->all(FLERR, "Illegal pair_style {} command: {} (valid: {})", style_, arg[k],
-                 law_ == Law::mdr ? "pair_split equal_pair|balanced|geometric, delta_max paper_19|running_max, "
-                                    "damping restitution_exact|authors, friction mindlin|authors, "
-                                    "yield_onset elastic_law|hertz_40, surface_energy_share series|each_side_full, "
-                                    "adhesive_radius paper|authors, release critical_overlap|zero_overlap, "
-                                    "contact_penalty off|on"
-                                  : "no arguments");
+                 law_ == Law::mdr
+                     ? "pair_split equal_pair|balanced|geometric|geometric_authors, delta_max paper_19|running_max, "
+                       "damping restitution_exact|authors, friction mindlin|authors, "
+                       "yield_onset elastic_law|hertz_40, surface_energy_share series|each_side_full, "
+                       "adhesive_radius paper|authors, release critical_overlap|zero_overlap, "
+                       "contact_penalty off|on"
+                     : "no arguments");
     int found = -1;
     for (std::size_t q = 0; q < key->choices.size(); q++)
       if (std::strcmp(arg[k + 1], key->choices[q]) == 0) found = static_cast<int>(q);

@@ -200,3 +200,39 @@ TEMPLATE_LIST_TEST_CASE("MDR pair split: radius growth shares a same-material pa
     CHECK(V0 + V1 == Approx(2 * Ve).epsilon(0.15));  // the equal pair's total, within 15%
   }
 }
+
+// MdrPairSplit::geometric_authors: the authors' unloading path (LAMMPS gran_sub_mod_normal.cpp)
+// below the largest overlap, the radical plane at and above it; the same line as geometric's for
+// equal spheres with equal residuals; geometric's path where the residuals sum to dmax or more.
+TEST_CASE("MDR pair split: geometric_authors follows the authors' unloading line", "[mdr][pair][split]") {
+  const double R0 = 1e-3, R1 = 1.4e-3, dmax = 0.2e-3, dp0 = 0.09e-3, dp1 = 0.05e-3;
+  const double h0 = mdr_side0_height(dmax, R0, R1);
+  for (double delta : {0.25e-3, 0.2e-3}) {  // loading: the radical plane, as geometric
+    const auto a = mdr_split_overlap(delta, std::max(delta, dmax), R0, R1, dp0, dp1, true);
+    const auto g = mdr_split_overlap(delta, std::max(delta, dmax), R0, R1, dp0, dp1);
+    CHECK(a.d0 == g.d0);
+    CHECK(a.d1 == g.d1);
+  }
+  double worst = 0.0;
+  for (double delta : {0.18e-3, 0.15e-3, 0.14e-3, 0.1e-3, 0.0}) {  // unloading, and past the residuals
+    const auto a = mdr_split_overlap(delta, dmax, R0, R1, dp0, dp1, true);
+    const auto g = mdr_split_overlap(delta, dmax, R0, R1, dp0, dp1);
+    const double lammps = h0 + (dp0 - h0) * (delta - dmax) / ((dp0 + dp1) - dmax);
+    CHECK(a.d0 == Approx(lammps).epsilon(1e-14));
+    CHECK(a.d0 + a.d1 == Approx(delta).margin(1e-18));
+    worst = std::max(worst, std::abs(a.d0 - g.d0));
+  }
+  INFO("largest |d_0(geometric_authors) - d_0(geometric)| " << worst);
+  CHECK(worst > 1e-3 * dmax);  // unequal spheres: the two paths differ
+  // equal spheres, equal residuals: one line
+  for (double delta : {0.15e-3, 0.1e-3, 0.02e-3}) {
+    const auto a = mdr_split_overlap(delta, dmax, R0, R0, 0.05e-3, 0.05e-3, true);
+    const auto g = mdr_split_overlap(delta, dmax, R0, R0, 0.05e-3, 0.05e-3);
+    CHECK(a.d0 == Approx(g.d0).epsilon(1e-12));
+  }
+  // residuals summing to dmax or more (the authors' denominator >= 0): geometric's path
+  const auto a = mdr_split_overlap(0.15e-3, dmax, R0, R1, 0.1e-3, 0.1e-3, true);
+  const auto g = mdr_split_overlap(0.15e-3, dmax, R0, R1, 0.1e-3, 0.1e-3);
+  CHECK(a.d0 == g.d0);
+  CHECK(std::isfinite(a.d0));
+}

@@ -116,8 +116,9 @@ struct Mdr {
   int nmat = 0;
   RollingTable<T, Device, Eff::rolling> rolling;  // per material pair; empty unless Eff::rolling
   T xi = T(1);
-  bool geometric_split = false;   // MdrOptions::pair_split == geometric (the authors' flat)
-  bool equal_pair_split = false;  // MdrOptions::pair_split == equal_pair (detail/mdr_pair_equal.hpp)
+  bool geometric_split = false;    // MdrOptions::pair_split == geometric[_authors] (the authors' flat)
+  bool authors_unloading = false;  // MdrOptions::pair_split == geometric_authors (their unloading path)
+  bool equal_pair_split = false;   // MdrOptions::pair_split == equal_pair (detail/mdr_pair_equal.hpp)
   // MdrOptions::delta_max: 1 for MDR (19), delta_max shifted by R - R_o; 0 for the authors' running
   // maximum of delta (the sides then see no shift)
   T growth_in_max = T(1);
@@ -304,7 +305,8 @@ struct Mdr {
     Mdr m;
     m.nmat = static_cast<int>(materials.size());
     m.xi = T(opt.xi);
-    m.geometric_split = opt.pair_split == MdrPairSplit::geometric;
+    m.geometric_split = opt.pair_split == MdrPairSplit::geometric || opt.pair_split == MdrPairSplit::geometric_authors;
+    m.authors_unloading = opt.pair_split == MdrPairSplit::geometric_authors;
     m.equal_pair_split = opt.pair_split == MdrPairSplit::equal_pair;
     m.sides = Kokkos::View<MdrSideConstants<T>*, Device>("mdr.sides", m.nmat);
     m.pairs = Kokkos::View<MdrPairConstants<T>*, Device>("mdr.pairs", m.nmat * m.nmat);
@@ -551,7 +553,8 @@ struct Mdr {
     // the residual overlaps enter the geometric split only below dmax (mdr_split_overlap)
     if (Write && Eff::plasticity && dmax > T(0) && !(g.delta >= dmax))
       for (int s = 0; s < 2; ++s) e.st[s].delta_p = row(side_base(s) + SideField::delta_p);
-    const MdrSideOverlaps<T> so = mdr_split_overlap(g.delta, dmax, e.Rs[0], e.Rs[1], e.st[0].delta_p, e.st[1].delta_p);
+    const MdrSideOverlaps<T> so =
+        mdr_split_overlap(g.delta, dmax, e.Rs[0], e.Rs[1], e.st[0].delta_p, e.st[1].delta_p, authors_unloading);
     e.dside[0] = so.d0;
     e.dside[1] = so.d1;
     return dmax;

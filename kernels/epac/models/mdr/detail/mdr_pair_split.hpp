@@ -35,6 +35,12 @@
 //   below their residuals, separated, by the uncapped radical height of x: |d_s - e_s| <= |x|.
 // The split is continuous in delta and d_0 + d_1 = delta everywhere (the flat stays between the
 // spheres).
+// authors_unloading (MdrPairSplit::geometric_authors): the authors' path itself below dmax,
+//   d_0 = h_0 + (delta_p,0 - h_0) (delta - dmax) / ((delta_p,0 + delta_p,1) - dmax)
+// (LAMMPS gran_sub_mod_normal.cpp, GranSubModNormalMDR::calculate_forces, and its mean surface
+// displacement in fix_granular_mdr.cpp), for like-with-like comparisons; where its denominator is
+// not negative (defect (a)) epac's path above is taken instead. For equal spheres with equal
+// residuals both paths are the same line.
 #include <epac/core/kokkos_compat.hpp>
 
 namespace epac {
@@ -74,9 +80,11 @@ struct MdrSideOverlaps {
 };
 
 // Splits the pair's apparent overlap delta. dmax: largest total overlap so far (>= delta after the
-// caller's update); dp0, dp1: the sides' residual overlaps (0 while elastic).
+// caller's update); dp0, dp1: the sides' residual overlaps (0 while elastic); authors_unloading:
+// the authors' path below dmax (above).
 template <class T>
-KOKKOS_FORCEINLINE_FUNCTION MdrSideOverlaps<T> mdr_split_overlap(T delta, T dmax, T R0, T R1, T dp0, T dp1) {
+KOKKOS_FORCEINLINE_FUNCTION MdrSideOverlaps<T> mdr_split_overlap(T delta, T dmax, T R0, T R1, T dp0, T dp1,
+                                                                 bool authors_unloading = false) {
   if (!(dmax > T(0))) {
     // never pressed together: the radical plane at the current (non-positive) overlap
     const T h0 = mdr_radical_cap_height(delta, R0, R1);
@@ -85,6 +93,13 @@ KOKKOS_FORCEINLINE_FUNCTION MdrSideOverlaps<T> mdr_split_overlap(T delta, T dmax
   const T h0 = mdr_side0_height(dmax, R0, R1);
   const T h1 = dmax - h0;
   if (delta >= dmax) return {h0, h1};  // loading (the caller keeps dmax >= delta)
+  if (authors_unloading) {
+    const T den = (dp0 + dp1) - dmax;
+    if (den < T(0)) {
+      const T d0 = h0 + (dp0 - h0) * (delta - dmax) / den;
+      return {d0, delta - d0};
+    }
+  }
   const T e0 = math::clamp(dp0, T(0), h0), e1 = math::clamp(dp1, T(0), h1);
   const T S = e0 + e1;
   const T x = delta - S;
