@@ -321,19 +321,16 @@ struct MdrContactPenalty {
             ab.hi = a_lo ? b : a;
             ab.key = pair_key(p.gid(a), p.gid(b));
             ab.r = r_ab;
-            // the term of third particle c with the lengths of its sides to a and b (-1: apart)
+            // the term of third particle c (never a or b) with its sides' lengths to a and b (-1: apart)
             auto add = [&](int c, P r_ac, P r_bc) {
-              if (r_ac < P(0) || r_bc < P(0) || c == a || c == b) return;
+              if (r_ac < P(0) || r_bc < P(0)) return;
               pen += triangle_term(p, ab, c, a_lo ? r_ac : r_bc, a_lo ? r_bc : r_ac);
             };
-            auto length_of = [&](int s) { return inc_k(s) >= 0 ? len(inc_k(s)) : P(-1); };
-            if (ghost_end) {
-              for (int ia = off(a); ia < off(a + 1); ++ia) {
-                const int c = inc(ia);
-                const P r_ac = length_of(ia);
-                if (r_ac >= P(0) && c != b) add(c, r_ac, touching_length(p, b, c));
-              }
-            } else {
+            if (ghost_end) {  // (a self-pair's entries have length -1)
+              for (int ia = off(a); ia < off(a + 1); ++ia)
+                if (inc(ia) != b && inc_k(ia) >= 0 && len(inc_k(ia)) >= P(0))  // a-c touches: measure b-c
+                  add(inc(ia), len(inc_k(ia)), touching_length(p, b, inc(ia)));
+            } else {  // the candidates exclude a and b (index_triangles)
               for (int t = toff(k); t < toff(k + 1); ++t) add(third(t), len(side_a(t)), len(side_b(t)));
             }
           }
