@@ -24,7 +24,34 @@ Material glass() {
 
 // Sums: the accumulation policy (compute/particle_sums.hpp). DefaultSums is what the backend
 // gets (per-thread copies on OpenMP); AtomicSums forces atomics, to show what they cost.
-template <class Sums = DefaultSums, class Model>
+// The pass as compute_pair_forces runs it.
+struct DefaultForm {
+  template <class... A>
+  void operator()(const A&... a) const {
+    compute_pair_forces(a...);
+  }
+};
+// The one-contact kernel, which Hertz-Mindlin ran before contacts in lanes (and which the
+// deterministic mode and the laws without a lane form run).
+struct OneContactForm {
+  template <class Model, class... A>
+  void operator()(const Model& model, const A&... a) const {
+    detail::pair_kernel<Model::effects::friction>(
+        model, a..., ContactOutputs<typename Model::scalar_type, typename Model::device_type>{},
+        ContactForceBuffer<typename Model::scalar_type, typename Model::device_type>{});
+  }
+};
+// Contacts in lanes of width W (compute/pair_lanes.hpp): the width's effect.
+template <int W>
+struct LanesForm {
+  template <class Model, class... A>
+  void operator()(const Model& model, const A&... a) const {
+    detail::pair_kernel_lanes<W>(model, a...,
+                                 ContactOutputs<typename Model::scalar_type, typename Model::device_type>{});
+  }
+};
+
+template <class Sums = DefaultSums, class Form = DefaultForm, class Model>
 void run_contact_kernel(benchmark::State& state, const Model& model) {
   using T = typename Model::scalar_type;
   using D = typename Model::device_type;
@@ -34,7 +61,7 @@ void run_contact_kernel(benchmark::State& state, const Model& model) {
   for (auto _ : state) {
     zero_forces(pk.particles);
     sums.begin();
-    compute_pair_forces(model, pk.particles, pk.contacts, h, T(1e-7), sums);
+    Form{}(model, pk.particles, pk.contacts, h, T(1e-7), sums);
     sums.end();
     Kokkos::fence();
   }
@@ -52,6 +79,16 @@ void BM_HertzMindlin(benchmark::State& state) {
 template <class T>
 void BM_HertzMindlinAtomic(benchmark::State& state) {
   run_contact_kernel<AtomicSums>(state, HertzMindlin<T, Effects<kFriction | kDamping>>::create({glass()}));
+}
+template <class T>
+void BM_HertzMindlinOneContact(benchmark::State& state) {
+  run_contact_kernel<DefaultSums, OneContactForm>(state,
+                                                  HertzMindlin<T, Effects<kFriction | kDamping>>::create({glass()}));
+}
+template <class T, int W>
+void BM_HertzMindlinLanes(benchmark::State& state) {
+  run_contact_kernel<DefaultSums, LanesForm<W>>(state,
+                                                HertzMindlin<T, Effects<kFriction | kDamping>>::create({glass()}));
 }
 template <class T>
 void BM_HertzOnly(benchmark::State& state) {  // no friction, no damping: what the effects cost
@@ -90,6 +127,14 @@ void packing_sizes(benchmark::internal::Benchmark* b) {
 
 BENCHMARK_TEMPLATE(BM_HertzMindlin, double)->Apply(packing_sizes);
 BENCHMARK_TEMPLATE(BM_HertzMindlin, float)->Apply(packing_sizes);
+BENCHMARK_TEMPLATE(BM_HertzMindlinOneContact, double)->Apply(packing_sizes);
+BENCHMARK_TEMPLATE(BM_HertzMindlinOneContact, float)->Apply(packing_sizes);
+#if !defined(KOKKOS_ENABLE_CUDA) && !defined(KOKKOS_ENABLE_HIP)  // the widths are a host question
+BENCHMARK_TEMPLATE(BM_HertzMindlinLanes, double, 4)->Apply(packing_sizes);
+BENCHMARK_TEMPLATE(BM_HertzMindlinLanes, double, 16)->Apply(packing_sizes);
+BENCHMARK_TEMPLATE(BM_HertzMindlinLanes, float, 4)->Apply(packing_sizes);
+BENCHMARK_TEMPLATE(BM_HertzMindlinLanes, float, 16)->Apply(packing_sizes);
+#endif
 BENCHMARK_TEMPLATE(BM_HertzMindlinAtomic, double)->Apply(packing_sizes);
 BENCHMARK_TEMPLATE(BM_HertzMindlinDeterministic, double)->Apply(packing_sizes);
 BENCHMARK_TEMPLATE(BM_HertzOnly, double)->Apply(packing_sizes);

@@ -6,6 +6,8 @@
 // compile time; models/hertz_mindlin.hpp is the smallest such law); its Effects set decides at
 // compile time what is computed and which history exists, and contact_conventions<Model>
 // (models/contact_conventions.hpp) the law-specific conventions around the normal force.
+#include <epac/compute/contact_outputs.hpp>
+#include <epac/compute/pair_lanes.hpp>
 #include <epac/compute/particle_sums.hpp>
 #include <epac/core/vec3.hpp>
 #include <epac/models/contact_conventions.hpp>
@@ -21,28 +23,6 @@
 #include <type_traits>
 
 namespace epac {
-
-// Optional per-contact outputs; leave a view empty to skip it.
-template <class T, class Device>
-struct ContactOutputs {
-  Kokkos::View<T*, Device> normal_force;  // total normal force on i along n (law + damping)
-  Kokkos::View<T*, Device> overlap;       // delta
-};
-
-// Deterministic mode (docs/design.md section 6): when `force` is allocated, the kernel stores each
-// contact's force on its listed first particle (c.first(k)) and the torques on first and second
-// here instead of adding them to the sums; compute/deterministic_reduce.hpp then sums them per
-// particle in a fixed order. The pair kernel then evaluates every pair in the orientation of the
-// smaller global id, so the stored values are the same bits for (i, j) and (j, i).
-template <class T, class Device>
-struct ContactForceBuffer {
-  using vec_view = Kokkos::View<T* [3], Kokkos::LayoutLeft, Device>;
-  vec_view force, torque_i, torque_j;
-  ContactForceBuffer() = default;
-  explicit ContactForceBuffer(int contacts)
-      : force("buffer.force", contacts), torque_i("buffer.torque_i", contacts), torque_j("buffer.torque_j", contacts) {}
-  KOKKOS_INLINE_FUNCTION bool enabled() const { return force.extent(0) > 0; }
-};
 
 // Index into a model's pair table; one material needs no material loads.
 template <class T, class Device>
@@ -305,6 +285,16 @@ void compute_pair_forces(const Model& model, const Particles<T, Device>& p, cons
   // laws only in the deterministic mode (buffer), so that their default path is unchanged (a
   // runtime test in the kernel cost Hertz without friction 8% more instructions per contact).
   constexpr bool ids_needed = detail::uses_side_order<Model>::value || Model::effects::friction;
+  // Laws with a branch-free lane form run in blocks of contacts where the build vectorises them
+  // (compute/pair_lanes.hpp, core/simd_lanes.hpp), in scenes of one material; the deterministic
+  // mode keeps the one-contact kernel (its buffer stores per contact).
+  constexpr int lanes = contact_lanes<typename Device::execution_space>::value;
+  if constexpr (detail::runs_in_lanes<Model>::value && lanes > 0) {
+    if (!buf.enabled() && model.nmat == 1) {
+      detail::pair_kernel_lanes<lanes>(model, p, c, h, dt, sums, out);
+      return;
+    }
+  }
   if constexpr (ids_needed)
     detail::pair_kernel<true>(model, p, c, h, dt, sums, out, buf);
   else if (buf.enabled())

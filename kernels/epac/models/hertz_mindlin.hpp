@@ -6,6 +6,7 @@
 // Damping F_d = c sqrt(m* k_n) d(delta)/dt with c from e0 by the exact Hertz relation of
 // params/restitution_damping.hpp (velocity-independent restitution); the total normal force is
 // clamped at zero (no viscous pull near separation).
+#include <epac/core/simd_lanes.hpp>
 #include <epac/models/contact_geometry.hpp>
 #include <epac/models/effects.hpp>
 #include <epac/models/rolling_resistance.hpp>
@@ -38,12 +39,19 @@ struct HertzMindlin {
   RollingTable<T, Device, Eff::rolling> rolling;  // per material pair; empty unless Eff::rolling
 
   KOKKOS_INLINE_FUNCTION NormalForce<T> normal(const ContactGeometry<T>& g, const HistoryRow<T, Device>&) const {
+    if (g.delta <= T(0)) return NormalForce<T>();
+    return normal_lane(pairs(g.pair), g.delta, g.R_eff);
+  }
+
+  // The law of one contact from its pair's constants, without branches: contacts in lanes
+  // (compute/pair_lanes.hpp) take it for a block of contacts at once; normal() is its scalar
+  // form (the same bits where delta > 0). Domain: the root of R* max(delta, 0) >= 0.
+  using lane_constants = HertzMindlinPair<T>;
+  KOKKOS_FORCEINLINE_FUNCTION static NormalForce<T> normal_lane(const HertzMindlinPair<T>& p, T delta, T R_eff) {
     NormalForce<T> r;
-    if (g.delta <= T(0)) return r;
-    const HertzMindlinPair<T> p = pairs(g.pair);
-    const T a = math::sqrt(g.R_eff * g.delta);  // Hertz contact radius
-    r.active = true;
-    r.f = T(4) / T(3) * p.E_star * a * g.delta;
+    const T a = math::sqrt(R_eff * lane_max(delta, T(0)));  // Hertz contact radius
+    r.active = delta > T(0);
+    r.f = T(4) / T(3) * p.E_star * a * delta;
     r.k_n = T(2) * p.E_star * a;
     if (Eff::damping) {
       r.damping = p.c_damp;
@@ -52,7 +60,7 @@ struct HertzMindlin {
     }
     if (Eff::friction) {
       r.k_t = p.kt_over_kn * r.k_n;
-      r.kt_root_ratio = p.kt_root;
+      r.kt_root_ratio = p.kt_root;  // lanes require k_t = kt_root^2 k_n (compute/pair_lanes.hpp)
       r.mu = p.mu;
     }
     return r;

@@ -33,11 +33,17 @@ struct LinearSpring {
   RollingTable<T, Device, Eff::rolling> rolling;  // per material pair; empty unless Eff::rolling
 
   KOKKOS_INLINE_FUNCTION NormalForce<T> normal(const ContactGeometry<T>& g, const HistoryRow<T, Device>&) const {
+    if (g.delta <= T(0)) return NormalForce<T>();
+    return normal_lane(pairs(g.pair), g.delta, g.R_eff);
+  }
+
+  // The law of one contact from its pair's constants, without branches (contacts in lanes,
+  // compute/pair_lanes.hpp); normal() is its scalar form (the same bits where delta > 0).
+  using lane_constants = LinearSpringPair<T>;
+  KOKKOS_FORCEINLINE_FUNCTION static NormalForce<T> normal_lane(const LinearSpringPair<T>& p, T delta, T /*R_eff*/) {
     NormalForce<T> r;
-    if (g.delta <= T(0)) return r;
-    const LinearSpringPair<T> p = pairs(g.pair);
-    r.active = true;
-    r.f = p.k_n * g.delta;
+    r.active = delta > T(0);
+    r.f = p.k_n * delta;
     r.k_n = p.k_n;
     if (Eff::damping) {
       r.damping = p.c_damp;
@@ -45,7 +51,7 @@ struct LinearSpring {
     }
     if (Eff::friction) {
       r.k_t = p.kt_over_kn * p.k_n;
-      r.kt_root_ratio = p.kt_root;
+      r.kt_root_ratio = p.kt_root;  // lanes require k_t = kt_root^2 k_n (compute/pair_lanes.hpp)
       r.mu = p.mu;
     }
     return r;

@@ -1,0 +1,55 @@
+#pragma once
+// Contacts in lanes (compute/pair_lanes.hpp): how many contacts one work item of the pair kernel
+// takes on an execution space, and the branch-free select its lanes use.
+// Host backends: a block of 8 contacts per work item, whose middle loop the host compiler turns
+// into SIMD instructions of the width the build allows (2 doubles with SSE4.1, 4 with AVX2, 8
+// with AVX-512). No intrinsics and no `omp simd` (its lowering moves each lane's small vectors
+// into strided arrays the vectoriser cannot store). GPUs: one lane, i.e. one contact per thread,
+// the same source.
+// g++ 12 vectorises the loop only where the target has 64-bit integer compares and blends (x86:
+// SSE4.1 and later). On the x86-64 baseline (SSE2) the loop stays scalar and measured slower
+// than the one-contact kernel (docs/performance.md, "Contacts in lanes"): there the width is 0
+// and the pair kernel takes one contact per work item, as before.
+#include <Kokkos_Core.hpp>
+
+#include <cstdint>
+#include <cstring>
+#include <type_traits>
+
+namespace epac {
+
+#if defined(__SSE4_1__)
+inline constexpr int kContactLanesHost = 8;  // 8 measured best of 4 / 8 / 16 (AVX-512, double)
+#else
+inline constexpr int kContactLanesHost = 0;  // not vectorised here: the one-contact kernel
+#endif
+
+template <class ExecutionSpace>
+struct contact_lanes
+    : std::integral_constant<
+          int, std::is_same<typename ExecutionSpace::memory_space, Kokkos::HostSpace>::value ? kContactLanesHost : 1> {
+};
+
+// c ? a : b as bit operations: a ternary is a branch to the compiler's middle end, and jump
+// threading then duplicates the code after it for each side, which leaves stores and divisions
+// on one path only (the vectoriser gives up: "control flow in loop"). Both operands are
+// evaluated; the result is exactly a or b.
+template <class T>
+KOKKOS_FORCEINLINE_FUNCTION T lane_select(bool c, T a, T b) {
+  using U = std::conditional_t<sizeof(T) == 8, std::uint64_t, std::uint32_t>;
+  static_assert(sizeof(T) == sizeof(U), "lane_select: float or double");
+  U ua, ub;
+  memcpy(&ua, &a, sizeof(T));
+  memcpy(&ub, &b, sizeof(T));
+  const U mask = U(0) - U(c);
+  const U r = (ua & mask) | (ub & ~mask);
+  T out;
+  memcpy(&out, &r, sizeof(T));
+  return out;
+}
+template <class T>
+KOKKOS_FORCEINLINE_FUNCTION T lane_max(T a, T b) {
+  return lane_select(a < b, b, a);  // math::max's result, as a select
+}
+
+}  // namespace epac
