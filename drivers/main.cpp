@@ -105,7 +105,8 @@ int main(int argc, char** argv) {
   app.add_flag("--deterministic", opt.deterministic,
                "deterministic mode: the same bits for any thread count (as [run] deterministic = true)");
   app.add_flag("--phase-times", opt.phase_times,
-               "seconds per loop phase (detection, remap, force, growth, integration, output) in summary.json");
+               "seconds per loop phase (detection, remap, force, growth, integration, output) in summary.json "
+               "(with --time-after, the window's own in \"timed\")");
   app.add_option("--time-after", opt.time_after,
                  "also time the steps after N alone (summary.json \"timed\"; e.g. a hold phase)")
       ->check(CLI::Range(int64_t(0), int64_t(1000000000000LL)));

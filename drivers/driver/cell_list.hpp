@@ -88,6 +88,34 @@ struct CellList {
       }
     }
   }
+
+  // for_each_near restricted to the partners j > i, in the same order: a cell's slice is in
+  // ascending index, so a cell whose last index is <= i is skipped whole and the others from
+  // their first index > i. After a spatial sort indices follow the cells, so about half the
+  // cells around i hold only lower indices (the pair search visits each pair from its lower end).
+  template <class F>
+  KOKKOS_INLINE_FUNCTION void for_each_near_above(const Vec3<P>& x, int i, F&& f) const {
+    const int cx = axis_cell(x.x, lo.x, h.x, nx, px), cy = axis_cell(x.y, lo.y, h.y, ny, py),
+              cz = axis_cell(x.z, lo.z, h.z, nz, pz);
+    int x0, x1, y0, y1, z0, z1;
+    axis_range(cx, nx, px, x0, x1);
+    axis_range(cy, ny, py, y0, y1);
+    axis_range(cz, nz, pz, z0, z1);
+    for (int oz = z0; oz <= z1; ++oz) {
+      const int z = axis_wrap(cz + oz, nz);
+      for (int oy = y0; oy <= y1; ++oy) {
+        const int y = axis_wrap(cy + oy, ny);
+        for (int ox = x0; ox <= x1; ++ox) {
+          const int c = (z * ny + y) * nx + axis_wrap(cx + ox, nx);
+          const int end = start(c + 1);
+          if (end == start(c) || sorted(end - 1) <= i) continue;
+          int s = start(c);
+          while (sorted(s) <= i) ++s;  // stops: the last entry is > i
+          for (; s < end; ++s) f(sorted(s));
+        }
+      }
+    }
+  }
 };
 
 // Bins the particles into cells of edge >= min_cell. The number of cells is capped at about

@@ -39,9 +39,15 @@ ContactList<Device> list_with_room(const ContactList<Device>& old, int count, co
 
 // Pairs within R_i + R_j + skin (minimum-image distance on p.box's periodic axes), each once,
 // stored with gid(first) < gid(second). `reuse` donates its storage if large enough.
+// rows (optional): set to the list's row offsets over i = min(first, second) (n + 1 entries:
+// the pairs found from particle i are entries rows(i) .. rows(i+1)-1), for remap_by_rows.
+// The count pass keeps up to kPairScratch partners per particle, so the fill pass copies them
+// instead of searching the cells again (the same list in the same order; a particle with more
+// partners searches again).
+constexpr int kPairScratch = 16;
 template <class T, class Device>
 ContactList<Device> find_pairs(const Particles<T, Device>& p, const CellList<T, Device>& cells, T skin,
-                               const ContactList<Device>& reuse = {}) {
+                               const ContactList<Device>& reuse = {}, Kokkos::View<int*, Device>* rows = nullptr) {
   using exec = typename Device::execution_space;
   using P = typename Particles<T, Device>::position_type;
   const int n = p.n;
@@ -50,17 +56,22 @@ ContactList<Device> find_pairs(const Particles<T, Device>& p, const CellList<T, 
   const PeriodicBox<P> box = p.box;  // distances by minimum image on its periodic axes
   const bool periodic = box.periodic();
   Kokkos::View<int*, Device> offset("epac::driver::pair_offset", n + 1);
+  constexpr int K = kPairScratch;
+  Kokkos::View<int*, Device> scratch(Kokkos::view_alloc(Kokkos::WithoutInitializing, "epac::driver::pair_scratch"),
+                                     static_cast<std::size_t>(n) * K);
   Kokkos::parallel_for(
       "epac::driver::pair_count", Kokkos::RangePolicy<exec>(0, n), KOKKOS_LAMBDA(int i) {
         const Vec3<P> xi = load3(x, i);
         const T ri = r(i);
         int c = 0;
-        cells.for_each_near(xi, [&](int j) {
-          if (j <= i) return;
+        cells.for_each_near_above(xi, i, [&](int j) {
           Vec3<P> d = xi - load3(x, j);
           if (periodic) d = box.minimum_image(d);
           const P cut = P(ri) + P(r(j)) + P(skin);
-          if (dot(d, d) < cut * cut) ++c;
+          if (dot(d, d) < cut * cut) {
+            if (c < K) scratch(static_cast<std::size_t>(i) * K + c) = j;
+            ++c;
+          }
         });
         offset(i) = c;
       });
@@ -79,11 +90,20 @@ ContactList<Device> find_pairs(const Particles<T, Device>& p, const CellList<T, 
   auto gid = p.gid;
   Kokkos::parallel_for(
       "epac::driver::pair_fill", Kokkos::RangePolicy<exec>(0, n), KOKKOS_LAMBDA(int i) {
+        int k = offset(i);
+        const int c = offset(i + 1) - k;
+        if (c <= K) {  // the count pass's partners, in its order
+          for (int m = 0; m < c; ++m) {
+            const int j = scratch(static_cast<std::size_t>(i) * K + m);
+            const bool swap = gid(j) < gid(i);  // oriented by global id (below)
+            first(k + m) = swap ? j : i;
+            second(k + m) = swap ? i : j;
+          }
+          return;
+        }
         const Vec3<P> xi = load3(x, i);
         const T ri = r(i);
-        int k = offset(i);
-        cells.for_each_near(xi, [&](int j) {
-          if (j <= i) return;
+        cells.for_each_near_above(xi, i, [&](int j) {
           Vec3<P> d = xi - load3(x, j);
           if (periodic) d = box.minimum_image(d);
           const P cut = P(ri) + P(r(j)) + P(skin);
@@ -98,14 +118,17 @@ ContactList<Device> find_pairs(const Particles<T, Device>& p, const CellList<T, 
           }
         });
       });
+  if (rows) *rows = offset;
   return list;
 }
 
 // Particle-wall contacts: signed distance from the plane < R_i + skin (particles behind a wall
 // count too: they overlap it by more than their radius).
+// rows (optional): the row offsets over the particle index (as find_pairs).
 template <class T, class Device>
 ContactList<Device> find_wall_contacts(const Particles<T, Device>& p, const Walls<T, Device>& w, T skin,
-                                       const ContactList<Device>& reuse = {}) {
+                                       const ContactList<Device>& reuse = {},
+                                       Kokkos::View<int*, Device>* rows = nullptr) {
   using exec = typename Device::execution_space;
   using P = typename Particles<T, Device>::position_type;
   const int n = p.n, nw = w.n;
@@ -149,7 +172,40 @@ ContactList<Device> find_wall_contacts(const Particles<T, Device>& p, const Wall
             }
         });
   }
+  if (rows) *rows = offset;
   return list;
+}
+
+// remap_history (compute/history_remap.hpp) for a list rebuilt on unchanged particle indices:
+// a persisting contact keeps the particle it is found from (pairs: i = min(first, second);
+// walls: first), so its old row lies among the few of the old list's rows of that particle
+// (old_rows, the old list's row offsets). A scan of those keys replaces the sort of all old keys
+// and a binary search per contact, which cost about as much as the detection itself. The same
+// rows are carried over (keys are unique), so the result equals remap_history's.
+template <class T, class Device>
+ContactHistory<T, Device> remap_by_rows(const ContactHistory<T, Device>& old,
+                                        const Kokkos::View<int*, Device>& old_rows, const ContactList<Device>& list,
+                                        bool pairs, const Kokkos::View<std::uint64_t*, Device>& new_keys, int fields) {
+  using exec = typename Device::execution_space;
+  ContactHistory<T, Device> fresh(new_keys, fields, "history");
+  if (fields == 0 || old.rows() == 0 || list.count == 0) return fresh;
+  auto okeys = old.keys;
+  auto odata = old.data;
+  auto ndata = fresh.data;
+  auto first = list.first;
+  auto second = list.second;
+  Kokkos::parallel_for(
+      "epac::driver::remap_by_rows", Kokkos::RangePolicy<exec>(0, list.count), KOKKOS_LAMBDA(int k) {
+        const int a = first(k), b = second(k);
+        const int i = pairs && b < a ? b : a;
+        const std::uint64_t key = new_keys(k);
+        for (int s = old_rows(i); s < old_rows(i + 1); ++s)
+          if (okeys(s) == key) {
+            for (int f = 0; f < fields; ++f) ndata(k, f) = odata(s, f);
+            return;
+          }
+      });
+  return fresh;
 }
 
 // Owns the contact lists and their histories; rebuilds and remaps when the skin is used up.
@@ -192,14 +248,15 @@ class ContactDetector {
     CellList<T, Device> cells = build_cell_list(p, T(2) * rmax + skin_);
     if (on_sort && *on_sort) {
       (*on_sort)(cells.sorted);
+      reordered_ = true;  // the histories' row offsets no longer match the indices
       Kokkos::View<int*, Device> identity(Kokkos::view_alloc(Kokkos::WithoutInitializing, "epac::driver::cell_sorted"),
                                           p.n);
       Kokkos::parallel_for(
           "epac::driver::cell_identity", Kokkos::RangePolicy<exec>(0, p.n), KOKKOS_LAMBDA(int k) { identity(k) = k; });
       cells.sorted = identity;
     }
-    pairs = find_pairs(p, cells, skin_, pairs);
-    walls = find_wall_contacts(p, w, skin_, walls);
+    pairs = find_pairs(p, cells, skin_, pairs, &pair_rows_);
+    walls = find_wall_contacts(p, w, skin_, walls, &wall_rows_);
     // Reference state for the rebuild rule.
     if (static_cast<int>(x_build_.extent(0)) != p.n) {
       x_build_ = position_view("epac::driver::x_build", p.n);
@@ -211,9 +268,29 @@ class ContactDetector {
     Kokkos::deep_copy(wall_build_, w.point);
     ++builds;
   }
+  // Without a spatial sort since the histories' lists were built, by the old lists' rows
+  // (remap_by_rows, the same result); otherwise by sorted keys (remap_history).
   void remap(const Particles<T, Device>& p) {
-    pair_history = remap_history(pair_history, pair_contact_keys(p, pairs), pair_fields_);
-    wall_history = remap_history(wall_history, wall_contact_keys(p, walls), wall_fields_);
+    const bool rows_valid = !reordered_ && static_cast<int>(hist_pair_rows_.extent(0)) == p.n + 1 &&
+                            static_cast<int>(hist_wall_rows_.extent(0)) == p.n + 1;
+    auto by_rows = [&](const ContactHistory<T, Device>& h, int fields, int old_count) {
+      return rows_valid && h.fields == fields && h.has_keys() && h.rows() == old_count;
+    };
+    if (by_rows(pair_history, pair_fields_, hist_pairs_))
+      pair_history =
+          remap_by_rows(pair_history, hist_pair_rows_, pairs, true, pair_contact_keys(p, pairs), pair_fields_);
+    else
+      pair_history = remap_history(pair_history, pair_contact_keys(p, pairs), pair_fields_);
+    if (by_rows(wall_history, wall_fields_, hist_walls_))
+      wall_history =
+          remap_by_rows(wall_history, hist_wall_rows_, walls, false, wall_contact_keys(p, walls), wall_fields_);
+    else
+      wall_history = remap_history(wall_history, wall_contact_keys(p, walls), wall_fields_);
+    hist_pair_rows_ = pair_rows_;
+    hist_wall_rows_ = wall_rows_;
+    hist_pairs_ = pairs.count;
+    hist_walls_ = walls.count;
+    reordered_ = false;
   }
 
   // max_i (|x_i - x_i,build| + max(0, R_i - R_i,build)).
@@ -282,6 +359,11 @@ class ContactDetector {
   int pair_fields_ = 0, wall_fields_ = 0;
   position_view x_build_, wall_build_;
   Kokkos::View<T*, Device> r_build_;
+  // Row offsets of the lists (find_pairs / find_wall_contacts) and of the lists the histories
+  // belong to, with those lists' lengths; reordered_: a sort since (remap_by_rows not valid).
+  Kokkos::View<int*, Device> pair_rows_, wall_rows_, hist_pair_rows_, hist_wall_rows_;
+  int hist_pairs_ = 0, hist_walls_ = 0;
+  bool reordered_ = false;
 };
 
 }  // namespace driver

@@ -177,6 +177,11 @@ void write_summary_json(const std::string& path, const RunSummary& s) {
                   {"wall_s", s.timed.wall_s},
                   {"list_contacts_mean", s.timed.list_contacts_mean},
                   {"active_contacts_mean", s.timed.active_contacts_mean}};
+    if (!s.timed.phases.empty()) {
+      nlohmann::json ph = nlohmann::json::object();
+      for (const auto& kv : s.timed.phases) ph[kv.first] = kv.second;
+      j["timed"]["phases"] = ph;
+    }
   }
   if (!s.phases.empty()) {
     nlohmann::json ph = nlohmann::json::object();

@@ -36,21 +36,38 @@ class PhaseTimer {
     seconds_[static_cast<int>(ph)] += std::chrono::duration<double>(now - mark_).count();
     mark_ = now;
   }
+  // The start of the --time-after window: charges the time since the last lap to `ph` and
+  // remembers the totals, so window_results() are the window's phases alone (the loop's totals
+  // mix the box deformation's steps into a hold phase's).
+  void mark_window(Phase ph) {
+    if (!running_) return;
+    lap(ph);
+    at_window_ = seconds_;
+    window_ = true;
+  }
 
   // (name, seconds) in the order of the enum: the keys of summary.json "phases".
-  std::vector<std::pair<std::string, double>> results() const {
-    static const char* names[] = {"detection", "remap", "force", "growth", "integration", "output"};
-    std::vector<std::pair<std::string, double>> r;
-    for (int k = 0; k < static_cast<int>(Phase::count); ++k) r.emplace_back(names[k], seconds_[k]);
-    return r;
+  std::vector<std::pair<std::string, double>> results() const { return named(seconds_, {}); }
+  // Since mark_window() (empty if it never ran): summary.json "timed" "phases".
+  std::vector<std::pair<std::string, double>> window_results() const {
+    if (!window_) return {};
+    return named(seconds_, at_window_);
   }
 
  private:
   using clock = std::chrono::steady_clock;
+  using Seconds = std::array<double, static_cast<int>(Phase::count)>;
+  static std::vector<std::pair<std::string, double>> named(const Seconds& s, const Seconds& minus) {
+    static const char* names[] = {"detection", "remap", "force", "growth", "integration", "output"};
+    std::vector<std::pair<std::string, double>> r;
+    for (int k = 0; k < static_cast<int>(Phase::count); ++k) r.emplace_back(names[k], s[k] - minus[k]);
+    return r;
+  }
   bool enabled_;
   bool running_ = false;
   clock::time_point mark_{};
-  std::array<double, static_cast<int>(Phase::count)> seconds_{};
+  Seconds seconds_{}, at_window_{};
+  bool window_ = false;
 };
 
 }  // namespace driver

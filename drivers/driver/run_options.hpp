@@ -69,6 +69,8 @@ struct RunSummary {
     double wall_s = 0;
     double list_contacts_mean = 0;    // list entries per step
     double active_contacts_mean = 0;  // overlapping contacts, mean over the window's output samples
+    // with --phase-times: the window's seconds per phase ("timed" "phases"); empty otherwise
+    std::vector<std::pair<std::string, double>> phases;
   } timed;
   // With a [box]: the edges at the end of the run [m] (summary.json "box_edge"); empty otherwise.
   std::vector<double> box_edge;

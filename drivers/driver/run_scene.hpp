@@ -326,6 +326,7 @@ class SceneRun {
     for (std::int64_t step = 1; step <= steps && sum_.status == "completed"; ++step) {
       if (step == opt_.time_after + 1) {
         Kokkos::fence();
+        phases_.mark_window(Phase::output);  // the window's own phase seconds (summary "timed")
         window_start_ = clock::now();
       }
       const T shift = advance(step);
@@ -427,6 +428,7 @@ class SceneRun {
       sum_.timed.list_contacts_mean = stats_.window_list_steps / static_cast<double>(sum_.timed.steps);
       sum_.timed.active_contacts_mean =
           stats_.window_samples > 0 ? stats_.window_active_sum / stats_.window_samples : 0.0;
+      sum_.timed.phases = phases_.window_results();
     }
     sum_.rebuilds = det_.builds - stats_.builds0;
     sum_.sorts = sorts_;

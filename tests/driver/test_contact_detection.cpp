@@ -139,6 +139,13 @@ TEMPLATE_LIST_TEST_CASE("the cell list finds exactly the pairs of an O(N^2) sear
   SECTION("one particle far away (the grid widens its cells)") {
     h.x[17] += 10.0;  // 10 m off: ~1e4 cells of 2.6 mm per axis without the cap
   }
+  SECTION("a cluster: particles with more partners than the count pass keeps (kPairScratch)") {
+    for (int k = 1; k <= 3 * kPairScratch; ++k) {  // overlapping particle 0: the fill pass searches again
+      h.x[k] = h.x[0] + 1e-5 * k;
+      h.y[k] = h.y[0];
+      h.z[k] = h.z[0];
+    }
+  }
   const double skin = 0.15 * r0;
   const auto p = to_device<D>(h);
   const CellList<double, D> cells = build_cell_list(p, 2.0 * r1 + skin);
