@@ -12,12 +12,16 @@
 #define KOKKOS_FORCEINLINE_FUNCTION __host__ __device__ inline
 #define KOKKOS_FUNCTION __host__ __device__
 #include <epac/core/root_solve.hpp>
+#include <epac/core/simd_lanes.hpp>
 #include <epac/core/vec3.hpp>
 #include <epac/models/mdr/detail/mdr_adhesion.hpp>
 #include <epac/models/mdr/mdr_bulk_response.hpp>
 #include <epac/models/mdr/mdr_contact_penalty.hpp>
 #include <epac/models/mdr/mdr_parameters.hpp>
 #include <epac/models/rolling_resistance.hpp>
+#include <epac/models/hertz_mindlin.hpp>
+#include <epac/models/linear_spring.hpp>
+#include <epac/models/tangential_spring.hpp>
 #include <epac/state/contact_history.hpp>
 #include <epac/state/contact_list.hpp>
 
@@ -39,6 +43,15 @@ __global__ void device_paths(T* out, T* row) {
   // MDR Part II: the increment split, A_c and F_BULK
   epac::MdrBulkSide<T> bs;
   const T d_mdr = epac::mdr_bulk_split(T(0.01), T(0.4), T(0.5), T(0.002), bs);
+  // contacts in lanes (compute/pair_lanes.hpp, one lane per thread on GPUs): the laws' lane
+  // forms, the exact selects, the sticking step and the sliding correction
+  const epac::HertzMindlinPair<T> hp{T(1e9), T(0.8), T(0.1), T(0.3), T(0.9)};
+  const auto nf = epac::HertzMindlin<T>::normal_lane(hp, T(1e-6), T(1e-3));
+  const epac::LinearSpringPair<T> lp{T(1e5), T(0.8), T(0.1), T(0.3), T(0.9)};
+  const auto nl = epac::LinearSpring<T>::normal_lane(lp, T(1e-6), T(1e-3));
+  auto tt = epac::tangential_trial(a, b, a, nf.k_t, T(0.1), T(1e-6));
+  epac::coulomb_slide(tt.ft, tt.xi, epac::lane_max(nf.f, nl.f), epac::dot(tt.ft, tt.ft), nf.k_t);
+  out[6] = epac::lane_select(nf.active, tt.ft.x, T(0));
   out[5] = epac::mdr_bulk_force(T(1e9), T(1), T(2), bs.delta_bulk, epac::mdr_bulk_area(d_mdr, T(1), true, T(-0.1)));
 }
 
