@@ -67,10 +67,10 @@ struct CellList {
   }
   KOKKOS_INLINE_FUNCTION static int axis_wrap(int c, int n_d) { return c < 0 ? c + n_d : (c >= n_d ? c - n_d : c); }
 
-  // Calls f(j) for every particle j in the cells around position x (its own and the up to 26
-  // neighbours, across the faces of periodic axes), each distinct cell once.
-  template <class F>
-  KOKKOS_INLINE_FUNCTION void for_each_near(const Vec3<P>& x, F&& f) const {
+  // Calls g(c) for every cell c around position x (its own and the up to 26 neighbours, across
+  // the faces of periodic axes), each distinct cell once, z slowest and x fastest.
+  template <class G>
+  KOKKOS_INLINE_FUNCTION void for_each_near_cell(const Vec3<P>& x, G&& g) const {
     const int cx = axis_cell(x.x, lo.x, h.x, nx, px), cy = axis_cell(x.y, lo.y, h.y, ny, py),
               cz = axis_cell(x.z, lo.z, h.z, nz, pz);
     int x0, x1, y0, y1, z0, z1;
@@ -81,40 +81,24 @@ struct CellList {
       const int z = axis_wrap(cz + oz, nz);
       for (int oy = y0; oy <= y1; ++oy) {
         const int y = axis_wrap(cy + oy, ny);
-        for (int ox = x0; ox <= x1; ++ox) {
-          const int c = (z * ny + y) * nx + axis_wrap(cx + ox, nx);
-          for (int s = start(c); s < start(c + 1); ++s) f(sorted(s));
-        }
+        for (int ox = x0; ox <= x1; ++ox) g((z * ny + y) * nx + axis_wrap(cx + ox, nx));
       }
     }
   }
 
-  // for_each_near restricted to the partners j > i, in the same order: a cell's slice is in
-  // ascending index, so a cell whose last index is <= i is skipped whole and the others from
+  // Calls f(j) for every particle j > i in the cells around position x, cell by cell in
+  // for_each_near_cell's order and ascending within a cell: a cell's slice is in ascending index, so a cell whose last index is <= i is skipped whole and the others from
   // their first index > i. After a spatial sort indices follow the cells, so about half the
   // cells around i hold only lower indices (the pair search visits each pair from its lower end).
   template <class F>
   KOKKOS_INLINE_FUNCTION void for_each_near_above(const Vec3<P>& x, int i, F&& f) const {
-    const int cx = axis_cell(x.x, lo.x, h.x, nx, px), cy = axis_cell(x.y, lo.y, h.y, ny, py),
-              cz = axis_cell(x.z, lo.z, h.z, nz, pz);
-    int x0, x1, y0, y1, z0, z1;
-    axis_range(cx, nx, px, x0, x1);
-    axis_range(cy, ny, py, y0, y1);
-    axis_range(cz, nz, pz, z0, z1);
-    for (int oz = z0; oz <= z1; ++oz) {
-      const int z = axis_wrap(cz + oz, nz);
-      for (int oy = y0; oy <= y1; ++oy) {
-        const int y = axis_wrap(cy + oy, ny);
-        for (int ox = x0; ox <= x1; ++ox) {
-          const int c = (z * ny + y) * nx + axis_wrap(cx + ox, nx);
-          const int end = start(c + 1);
-          if (end == start(c) || sorted(end - 1) <= i) continue;
-          int s = start(c);
-          while (sorted(s) <= i) ++s;  // stops: the last entry is > i
-          for (; s < end; ++s) f(sorted(s));
-        }
-      }
-    }
+    for_each_near_cell(x, [&](int c) {
+      const int end = start(c + 1);
+      if (end == start(c) || sorted(end - 1) <= i) return;
+      int s = start(c);
+      while (sorted(s) <= i) ++s;  // stops: the last entry is > i
+      for (; s < end; ++s) f(sorted(s));
+    });
   }
 };
 
