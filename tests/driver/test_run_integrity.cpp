@@ -311,44 +311,6 @@ TEST_CASE("the divergence watch names a non-finite particle", "[driver][divergen
   CHECK(summary_of(dir)["steps_completed"] == 0);
 }
 
-TEST_CASE("SIGINT and SIGTERM stop epac-run after a whole step with status interrupted",
-          "[driver][signals][integrity]") {
-  for (const int sig : {SIGINT, SIGTERM}) {
-    SECTION(sig == SIGINT ? "SIGINT" : "SIGTERM") {
-      const fs::path dir = fresh_out_dir(sig == SIGINT ? "sigint" : "sigterm");
-      const fs::path scene = write_scene(dir, kLongScene);
-      const fs::path out = dir / "out";
-      Child c = spawn_epac_run({scene.string(), "--out", out.string(), "--threads", "1", "--quiet"}, dir);
-      // wait until the run is stepping: a few rows in the streamed timeseries
-      const fs::path partial = out / "timeseries.csv.partial";
-      const auto t0 = std::chrono::steady_clock::now();
-      while (std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() < 60) {
-        if (fs::exists(partial) && fs::file_size(partial) > 4000) break;
-        std::this_thread::sleep_for(std::chrono::milliseconds(20));
-      }
-      if (!fs::exists(partial)) {  // no run to interrupt: end the child, then fail
-        kill(c.pid, SIGKILL);
-        wait_for(c);
-        FAIL("epac-run did not start stepping; stderr: " << slurp(c.err));
-      }
-      REQUIRE(kill(c.pid, sig) == 0);
-      const int rc = wait_for(c);
-      INFO("stderr: " << slurp(c.err));
-      CHECK(rc == 128 + sig);  // 130 / 143
-      CHECK(slurp(c.err).find("interrupted") != std::string::npos);
-      const auto j = summary_of(out);
-      CHECK(j["status"] == "interrupted");
-      CHECK(std::string(j["status_reason"]).find(sig == SIGINT ? "SIGINT" : "SIGTERM") != std::string::npos);
-      const long done = j["steps_completed"];
-      CHECK(done > 0);
-      CHECK(done < 100000000);
-      const auto steps = whole_rows(out / "timeseries.csv");
-      CHECK(steps.back() == done);  // the stop step writes its row
-      CHECK(partial_files(out).empty());
-    }
-  }
-}
-
 // The outputs of a run that a stop request ended: whole files, status interrupted by `sig`.
 void check_interrupted_outputs(const fs::path& out, int sig) {
   const auto j = summary_of(out);
@@ -357,7 +319,7 @@ void check_interrupted_outputs(const fs::path& out, int sig) {
   const long done = j["steps_completed"];
   CHECK(done > 0);
   const auto steps = whole_rows(out / "timeseries.csv");
-  CHECK(steps.back() == done);
+  CHECK(steps.back() == done);  // the stop step writes its row
   CHECK(partial_files(out).empty());
 }
 
@@ -370,6 +332,30 @@ bool wait_until_stepping(const fs::path& out) {
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
   return false;
+}
+
+TEST_CASE("SIGINT and SIGTERM stop epac-run after a whole step with status interrupted",
+          "[driver][signals][integrity]") {
+  for (const int sig : {SIGINT, SIGTERM}) {
+    SECTION(sig == SIGINT ? "SIGINT" : "SIGTERM") {
+      const fs::path dir = fresh_out_dir(sig == SIGINT ? "sigint" : "sigterm");
+      const fs::path scene = write_scene(dir, kLongScene);
+      const fs::path out = dir / "out";
+      Child c = spawn_epac_run({scene.string(), "--out", out.string(), "--threads", "1", "--quiet"}, dir);
+      if (!wait_until_stepping(out)) {  // no run to interrupt: end the child, then fail
+        kill(c.pid, SIGKILL);
+        wait_for(c);
+        FAIL("epac-run did not start stepping; stderr: " << slurp(c.err));
+      }
+      REQUIRE(kill(c.pid, sig) == 0);
+      const int rc = wait_for(c);
+      INFO("stderr: " << slurp(c.err));
+      CHECK(rc == 128 + sig);  // 130 / 143
+      CHECK(slurp(c.err).find("interrupted") != std::string::npos);
+      check_interrupted_outputs(out, sig);
+      CHECK(long(summary_of(out)["steps_completed"]) < 100000000);  // stopped, not run to the end
+    }
+  }
 }
 
 TEST_CASE("one stop request delivered twice (process, then its process group) ends the run cleanly",
