@@ -45,7 +45,8 @@ struct Jkr {
   int nmat = 0;
   RollingTable<T, Device, Eff::rolling> rolling;  // per material pair; empty unless Eff::rolling
 
-  KOKKOS_INLINE_FUNCTION NormalForce<T> normal(const ContactGeometry<T>& g, const HistoryRow<T, Device>& row) const {
+  KOKKOS_FORCEINLINE_FUNCTION NormalForce<T> normal(const ContactGeometry<T>& g,
+                                                    const HistoryRow<T, Device>& row) const {
     NormalForce<T> r;
     const JkrPair<T> p = pairs(g.pair);
     const T gamma = Eff::adhesion ? p.surface_energy : T(0);

@@ -151,8 +151,8 @@ KOKKOS_INLINE_FUNCTION Nan2022PairDerived<T> nan2022_pair_derived(const Nan2022P
 // Domains: R_star > 0, E* > 0, k_el > 0, p_y > 0 (host-validated; R_star > 0 in every contact).
 // Adhesion / Plasticity are the compile-time effects: off means Gamma = 0 / no yield, at no cost.
 template <class T, bool Adhesion = true, bool Plasticity = true>
-KOKKOS_INLINE_FUNCTION Nan2022ContactConstants<T> nan2022_contact_base(const Nan2022PairConstants<T>& p,
-                                                                       const Nan2022PairDerived<T>& d, T R_star) {
+KOKKOS_FORCEINLINE_FUNCTION Nan2022ContactConstants<T> nan2022_contact_base(const Nan2022PairConstants<T>& p,
+                                                                            const Nan2022PairDerived<T>& d, T R_star) {
   const T pi = constants<T>::pi;
   Nan2022ContactConstants<T> c;
   const T gamma = Adhesion ? p.surface_energy : T(0);

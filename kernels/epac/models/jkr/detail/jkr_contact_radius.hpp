@@ -94,7 +94,7 @@ KOKKOS_INLINE_FUNCTION T jkr_contact_radius_ratio(T d) {
 // closed form's root to within a few ulps either way. In a contact that moves little per step this
 // costs one or two divisions instead of two cube roots, three square roots and four divisions.
 template <class T>
-KOKKOS_INLINE_FUNCTION T jkr_contact_radius_root(T d, T y_guess) {
+KOKKOS_FORCEINLINE_FUNCTION T jkr_contact_radius_root(T d, T y_guess) {
   if (y_guess > T(0) && d > jkr_critical_overlap_ratio<T>() && d <= T(1e6)) {
     const T tol = T(2) * constants<T>::epsilon;
     T y = y_guess;

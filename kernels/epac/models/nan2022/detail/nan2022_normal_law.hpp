@@ -68,8 +68,8 @@ template <class T>
 struct Nan2022LineHistory {
   T& k_e;
   T& alpha_p;
-  KOKKOS_INLINE_FUNCTION void line(const Nan2022ContactConstants<T>& c, T alpha_max_history, int unloading_law,
-                                   Nan2022Unloading<T>& u) const {
+  KOKKOS_FORCEINLINE_FUNCTION void line(const Nan2022ContactConstants<T>& c, T alpha_max_history, int unloading_law,
+                                        Nan2022Unloading<T>& u) const {
     if (k_e > T(0)) {
       u.alpha_max = math::max(alpha_max_history, c.alpha_y);
       u.k_e = k_e;
