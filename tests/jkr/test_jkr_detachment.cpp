@@ -60,12 +60,17 @@ TEMPLATE_LIST_TEST_CASE("jkr detachment: one step past delta_c releases and rese
       INFO("jump to " << target);
       test::ContactStepper<M> s = fresh();
       for (double d : load) s.step(d);
+      {  // in contact: the last root and the contact's R*^(1/3), taken when it formed
+        const auto h = s.history();
+        CHECK(h[M::root_field] > 0.0);
+        CHECK(h[M::r13_field] == Approx(std::cbrt(R_star)).epsilon(sizeof(T) >= 8 ? 1e-14 : 1e-6));
+      }
       const double F = s.step(target);
       const double seen = s.overlap();
       CHECK((seen < dc) == (target < dc));  // the kernel saw the intended side of delta_c
       if (seen < dc) {
         CHECK(F == 0.0);
-        for (double x : s.history()) CHECK(x == 0.0);  // contact state and tangential history
+        for (double x : s.history()) CHECK(x == 0.0);  // contact state, R*^(1/3) and tangential history
         CHECK(s.step(-0.5 * std::fabs(dc)) == 0.0);    // a new contact: not formed at a gap
         CHECK(s.step(back) == F_fresh_back);
       } else {

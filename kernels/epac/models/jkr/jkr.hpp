@@ -3,10 +3,13 @@
 //   contact radius a from the overlap by (B3), solved on the stable branch (jkr_contact_radius.hpp)
 //   f = 4 E* a^3/(3 R*) - sqrt(8 pi Gamma E*) a^(3/2)          (B1)
 //   the contact forms at delta = 0 (f = -8/9 f_ce) and breaks at the critical overlap
-//   delta_c = -(3/4) (pi^2 Gamma^2 R* / E*^2)^(1/3) (f = -5/9 f_ce): a hysteresis, so one history
-//   field when adhesion is on: 0 apart, and in contact the last root y = sqrt(a/a_0) > 0, from
+//   delta_c = -(3/4) (pi^2 Gamma^2 R* / E*^2)^(1/3) (f = -5/9 f_ce): a hysteresis, so two history
+//   fields when adhesion is on, both 0 apart. In contact: the last root y = sqrt(a/a_0) > 0, from
 //   which the next step's solve starts (jkr_contact_radius_root: a Newton step or two instead of
-//   the closed form's cube roots). Force-controlled pull-off: -1.5 pi Gamma R*.
+//   the closed form's cube roots), and R*^(1/3), the contact's scale a_0 = a0_coeff R*^(2/3),
+//   taken once when the contact forms (glibc's cbrt was a fifth of the run). Like Nan 2022's
+//   unloading line it assumes R* stays fixed while the contact lasts (no radius change in JKR).
+//   Force-controlled pull-off: -1.5 pi Gamma R*.
 //   k_n = 2 E* a: the Hertz stiffness at the JKR contact radius. The exact tangent (B2) is
 //   infinite at delta_c and negative between delta_c and the pull-off point, unusable for damping
 //   and k_t; for f > 0 it is within ~4% of 2 E* a (Nan (B13)). So k_t = (4 G*/E*) k_n = 8 G* a.
@@ -37,7 +40,9 @@ struct Jkr {
   using effects = Eff;
   using device_type = Device;
   static constexpr const char* name = "jkr";
-  static constexpr int normal_history_size = Eff::adhesion ? 1 : 0;  // contact state and radius root
+  static constexpr int root_field = 0;  // if adhesion: 0 apart, else the last radius root y
+  static constexpr int r13_field = 1;   // if adhesion: 0 apart, else R*^(1/3) of the contact
+  static constexpr int normal_history_size = Eff::adhesion ? 2 : 0;
   // the tangential spring's 3 fields, then rolling resistance's 3 (compute/contact_forces.hpp)
   static constexpr int history_size = normal_history_size + (Eff::friction ? 3 : 0) + (Eff::rolling ? 3 : 0);
 
@@ -52,22 +57,30 @@ struct Jkr {
     const T gamma = Eff::adhesion ? p.surface_energy : T(0);
     T a;
     if (gamma > T(0)) {
-      // row(0): 0 apart; in contact, y = sqrt(a/a_0) of the last evaluation (> 0), the warm start
-      // of the radius solve (jkr_contact_radius_root)
-      const T y_last = row(0);
+      // root_field: 0 apart; in contact, y = sqrt(a/a_0) of the last evaluation (> 0), the warm
+      // start of the radius solve (jkr_contact_radius_root)
+      const T y_last = row(root_field);
       if (y_last == T(0) && g.delta < T(0)) return r;  // contact forms at delta = 0
-      const JkrScales<T> s = jkr_scales_from(p.a0_coeff, gamma, g.R_eff);
+      // R* > 0: the cube root is taken on the step the contact forms (history 0) and kept
+      const T r13_kept = row(r13_field);
+      const T r13 = r13_kept > T(0) ? r13_kept : math::cbrt(g.R_eff);
+      const JkrScales<T> s = jkr_scales_from_root(p.a0_coeff, r13, gamma, g.R_eff);
       const T d = g.delta / s.delta_s;                // delta_s > 0
       if (!(d >= jkr_critical_overlap_ratio<T>())) {  // breaks at the critical overlap
-        row(0) = T(0);
+        row(root_field) = T(0);
+        row(r13_field) = T(0);
         return r;
       }
       const T y = jkr_contact_radius_root(d, y_last);
-      row(0) = y;
+      row(root_field) = y;
+      row(r13_field) = r13;
       a = y * y * s.a0;
       r.f = s.f_ce * jkr_force_ratio_of_root(y);
     } else {
-      if (Eff::adhesion) row(0) = T(0);
+      if (Eff::adhesion) {
+        row(root_field) = T(0);
+        row(r13_field) = T(0);
+      }
       if (g.delta <= T(0)) return r;
       a = math::sqrt(g.R_eff * g.delta);  // Hertz
       r.f = T(4) / T(3) * p.E_star * a * g.delta;

@@ -31,11 +31,11 @@ KOKKOS_INLINE_FUNCTION JkrScales<T> jkr_scales(T gamma, T R_star, T E_star) {
   return s;
 }
 
-// The same scales from the pair's precomputed (2 pi Gamma / E*)^(1/3): one cube root per contact.
+// The same scales from the pair's precomputed (2 pi Gamma / E*)^(1/3) and the contact's
+// r13 = R*^(1/3) (the model keeps it in history: no cube root per step). R* > 0.
 template <class T>
-KOKKOS_INLINE_FUNCTION JkrScales<T> jkr_scales_from(T a0_coeff, T gamma, T R_star) {
+KOKKOS_INLINE_FUNCTION JkrScales<T> jkr_scales_from_root(T a0_coeff, T r13, T gamma, T R_star) {
   JkrScales<T> s;
-  const T r13 = math::cbrt(R_star);  // R* > 0
   s.a0 = a0_coeff * r13 * r13;
   s.delta_s = s.a0 * s.a0 / R_star;
   s.f_ce = T(1.5) * constants<T>::pi * gamma * R_star;
