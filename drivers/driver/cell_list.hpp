@@ -87,9 +87,10 @@ struct CellList {
   }
 
   // Calls f(j) for every particle j > i in the cells around position x, cell by cell in
-  // for_each_near_cell's order and ascending within a cell: a cell's slice is in ascending index, so a cell whose last index is <= i is skipped whole and the others from
-  // their first index > i. After a spatial sort indices follow the cells, so about half the
-  // cells around i hold only lower indices (the pair search visits each pair from its lower end).
+  // for_each_near_cell's order and ascending within a cell. A cell's slice is in ascending index,
+  // so a cell whose last index is <= i is skipped whole and the others from their first index
+  // > i. After a spatial sort indices follow the cells, so about half the cells around i hold
+  // only lower indices (the pair search visits each pair from its lower end).
   template <class F>
   KOKKOS_INLINE_FUNCTION void for_each_near_above(const Vec3<P>& x, int i, F&& f) const {
     for_each_near_cell(x, [&](int c) {
