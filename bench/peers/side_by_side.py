@@ -7,6 +7,13 @@ to 0.88 (linear) in 500 steps, then held 200 steps; about 65,856 contacts in the
 codes are timed on the hold phase only (LAMMPS: the loop time of its last `run`; epac: the
 steps after the deformation, `epac-run --time-after 500`), per active contact and step.
 
+--scene settling (issue 20, item 5): a flow that mixes instead of the lattice. 46,464 of the same
+beads, numbered in a random order, fall under gravity onto a floor in a box periodic in x and y
+(settling_scene.py; LAMMPS reads the same spheres from a data file, bench/peers/lammps/in.settling).
+Hertz-Mindlin against gran/hertz/history/omp only (LAMMPS's floor, fix wall/gran, takes that
+style's coefficients). Timed: steps 2001-4000, while the bed forms (about 1e5 contacts), per pair
+contact-step (timeseries.csv / thermo, every 100 steps).
+
 For each law and thread count the LAMMPS and epac runs alternate, `--repeats` times, and the best
 of each is kept (the machine is shared: compare the ratios of one run, never absolute times
 across runs). Prints a markdown table and writes JSON (--json).
@@ -14,6 +21,7 @@ across runs). Prints a markdown table and writes JSON (--json).
 Usage:
   python3 bench/peers/side_by_side.py [--threads 1 2] [--repeats 3] [--laws hm jkr nan mdr mdr_growth mdr_authors]
                                       [--precision double float] [--json FILE] [--before-epac-run EXE]
+                                      [--scene fcc|mixed|settling] [--ncell N] [--settling-grid NXY NZ]
 LAMMPS is built on first use (about 2-5 min; cached in ~/.cache/lammps-peer) with the build scripts
 of the LAMMPS peer kit supplied to developers beside the checkout (PEERS below; the kit's inputs
 are copied in bench/peers/lammps/, see its README.md); epac-run is taken from $EPAC_BUILD_DIR (default build/) and built if missing.
@@ -30,6 +38,7 @@ import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from fcc_scene import ROOT, fcc_scene  # noqa: E402
+import settling_scene  # noqa: E402
 
 PEERS = os.path.normpath(os.path.join(ROOT, "..", "shared", "peers", "lammps"))
 LMP_DEFAULT = os.path.expanduser("~/.cache/lammps-peer/build/lmp")
@@ -148,15 +157,20 @@ def lammps_hold(lmp, pair, mode, threads, ncell, workdir, tag):
             "ns_per_contact_step": 1e9 * loop / (contacts * steps)}
 
 
+def run_epac(exe, scene, threads, precision, out, time_after):
+    """Runs epac-run on a scene (threads unbound unless OMP_PROC_BIND is set); returns summary.json."""
+    env = dict(os.environ, OMP_NUM_THREADS=str(threads), OMP_PROC_BIND=os.environ.get("OMP_PROC_BIND", "false"))
+    subprocess.check_call([exe, scene, "--threads", str(threads), "--precision", precision, "--quiet",
+                           "--out", out, "--overwrite", "--time-after", str(time_after)], env=env)
+    return json.load(open(os.path.join(out, "summary.json")))
+
+
 def epac_hold(exe, law, threads, precision, ncell, workdir, tag, deform_steps=500, order=None, spatial_sort=None):
     scene = os.path.join(workdir, f"fcc_{law}_{order}_{spatial_sort}.toml")
     with open(scene, "w") as f:
         f.write(fcc_scene(LAWS[law]["epac"], ncell, order=order, spatial_sort=spatial_sort))
     out = os.path.join(workdir, f"epac.{law}.{precision}.{threads}t.{tag}")
-    env = dict(os.environ, OMP_NUM_THREADS=str(threads), OMP_PROC_BIND=os.environ.get("OMP_PROC_BIND", "false"))
-    subprocess.check_call([exe, scene, "--threads", str(threads), "--precision", precision, "--quiet",
-                           "--out", out, "--overwrite", "--time-after", str(deform_steps)], env=env)
-    s = json.load(open(os.path.join(out, "summary.json")))
+    s = run_epac(exe, scene, threads, precision, out, deform_steps)
     t = s["timed"]
     return {"loop_s": t["wall_s"], "steps": t["steps"], "contacts": t["active_contacts_mean"],
             "list_contacts": t["list_contacts_mean"], "force_s": (s.get("phases") or {}).get("force"),
@@ -187,6 +201,60 @@ def legacy_hold(exe, law, threads, workdir, tag):
     return {"loop_s": loop, "steps": 200, "contacts": contacts, "ns_per_contact_step": 1e9 * loop / (contacts * 200)}
 
 
+# The settling scene (settling_scene.py): Hertz-Mindlin only, since LAMMPS's floor (fix wall/gran
+# hertz/history) takes the coefficients of gran/hertz/history. Timed: the second half of the run.
+SETTLING_LAMMPS = [("hhist_omp", "omp", "gran/hertz/history/omp")]
+SETTLING_G = 20000.0  # m/s^2: the bed forms within the run's 4,000 steps of 5e-7 s (2 ms)
+SETTLING_WARM, SETTLING_TIMED = 2000, 2000
+
+
+def settling_files(workdir, law, nxy, nz):
+    """Writes the scene for both codes once; returns (epac scene, epac scene unsorted, LAMMPS data)."""
+    spheres, L, H = settling_scene.settling_spheres(nxy, nz)
+    names = [os.path.join(workdir, f"settling_{law}.toml"), os.path.join(workdir, f"settling_{law}_unsorted.toml"),
+             os.path.join(workdir, "settling.data")]
+    if not os.path.exists(names[0]):
+        text = settling_scene.epac_scene(LAWS[law]["epac"], spheres, L, H, SETTLING_G, SETTLING_WARM + SETTLING_TIMED)
+        open(names[0], "w").write(text)
+        open(names[1], "w").write(text.replace("[run]\n", "[run]\nspatial_sort = false\n", 1))
+        open(names[2], "w").write(settling_scene.lammps_data(spheres, L, H))
+    return names
+
+
+def lammps_settling(lmp, pair, mode, threads, data, workdir, tag):
+    """LAMMPS on the settling scene (bench/peers/lammps/in.settling): loop seconds of the timed run and
+    the mean of its pair contacts (thermo every 100 steps, after the warm-up)."""
+    log = os.path.join(workdir, f"log.settling.{pair}.{threads}t.{tag}")
+    cmd = [lmp, "-in", "in.settling", "-var", "model", pair, "-var", "data", data, "-var", "g", repr(SETTLING_G),
+           "-var", "nwarm", str(SETTLING_WARM), "-var", "nrun", str(SETTLING_TIMED), "-log", log, "-screen", "none"]
+    env = dict(os.environ, OMP_NUM_THREADS=str(threads if mode == "omp" else 1))
+    if mode == "omp":
+        cmd += ["-sf", "omp", "-pk", "omp", str(threads)]
+    subprocess.check_call(cmd, cwd=os.path.join(os.path.dirname(os.path.abspath(__file__)), "lammps"), env=env)
+    last = open(log).read().split("Loop time of ")
+    loop = float(last[-1].split()[0])
+    rows = [l.split() for l in last[-2].splitlines() if re.match(r"^\s+\d+\s+\d+\s", l)]
+    counts = [float(r[3]) for r in rows if int(r[0]) > SETTLING_WARM]
+    contacts = sum(counts) / len(counts)
+    pair_s = float(re.search(r"^Pair\s*\|\s*[0-9.eE+-]+\s*\|\s*([0-9.eE+-]+)", last[-1], re.M).group(1))
+    return {"loop_s": loop, "steps": SETTLING_TIMED, "contacts": contacts, "pair_s": pair_s,
+            "ns_per_contact_step": 1e9 * loop / (contacts * SETTLING_TIMED)}
+
+
+def epac_settling(exe, scene, threads, precision, workdir, tag):
+    """epac-run on the settling scene: the timed window's seconds per pair contact-step (the pair
+    contacts of timeseries.csv after the warm-up, as LAMMPS's compute contact/atom counts them)."""
+    out = os.path.join(workdir, f"epac.settling.{precision}.{threads}t.{tag}")
+    s = run_epac(exe, scene, threads, precision, out, SETTLING_WARM)
+    t = s["timed"]
+    rows = list(csv.DictReader(open(os.path.join(out, "timeseries.csv"))))
+    counts = [float(r["pair_contacts"]) for r in rows if int(r["step"]) > SETTLING_WARM]
+    contacts = sum(counts) / len(counts)
+    return {"loop_s": t["wall_s"], "steps": t["steps"], "contacts": contacts, "list_contacts": t["list_contacts_mean"],
+            "force_s": (s.get("phases") or {}).get("force"),
+            "ns_per_contact_step": 1e9 * t["wall_s"] / (contacts * t["steps"])}
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--threads", type=int, nargs="+", default=[1, 2])
@@ -194,12 +262,17 @@ def main():
     ap.add_argument("--laws", nargs="+", default=list(LAWS), choices=list(LAWS))
     ap.add_argument("--precision", nargs="+", default=["double"], choices=["double", "float"])
     ap.add_argument("--ncell", type=int, default=14)
-    ap.add_argument("--scene", default="fcc", choices=["fcc", "mixed"],
+    ap.add_argument("--scene", default="fcc", choices=["fcc", "mixed", "settling"],
                     help="mixed: epac's particles in a random order ([particles] order = \"shuffled\"), the order a "
                          "long mixing flow ends in; epac's default spatial sort is timed against the same build with "
                          "spatial_sort = false (the 'before' column). LAMMPS runs its own input, which it sorts "
                          "spatially at the setup of every run (verlet.cpp), so its input order does not matter. "
-                         "Use --ncell 30 (108,000 spheres, about 650,000 contacts)")
+                         "Use --ncell 30 (108,000 spheres, about 650,000 contacts). settling: spheres in a random "
+                         "order fall onto a floor (settling_scene.py; Hertz-Mindlin against gran/hertz/history/omp, "
+                         "--settling-grid), epac's default sort against spatial_sort = false as for mixed")
+    ap.add_argument("--settling-grid", type=int, nargs=2, default=[44, 24], metavar=("NXY", "NZ"),
+                    help="settling: spheres per grid row in x and y, and layers (default 44 24: 46,464 spheres, "
+                         "about 1e5 contacts in the timed half)")
     ap.add_argument("--json", default=None, help="write the measurements here")
     ap.add_argument("--lmp", default=os.environ.get("LMP", LMP_DEFAULT))
     ap.add_argument("--legacy-epac-run", default=None,
@@ -213,20 +286,39 @@ def main():
     lmp = ensure_lammps(args.lmp)
     exe = ensure_epac_run()
     order = "shuffled" if args.scene == "mixed" else None
-    if args.scene == "mixed" and (args.before_epac_run or args.legacy_epac_run):
-        ap.error("--scene mixed times its own 'before' (spatial_sort = false): no --before/--legacy-epac-run")
+    settling = args.scene == "settling"
+    if (args.scene == "mixed" and args.before_epac_run) or (args.scene != "fcc" and args.legacy_epac_run):
+        ap.error(f"--scene {args.scene} times its own 'before' (spatial_sort = false): no --before/--legacy-epac-run")
+    if settling and args.laws != ["hm"]:
+        ap.error("--scene settling runs Hertz-Mindlin only (--laws hm): LAMMPS's floor, fix wall/gran hertz/history, "
+                 "takes gran/hertz/history's coefficients")
     results = []
     with tempfile.TemporaryDirectory(prefix="epac-peers-") as work:
         for law in args.laws:
             for t in args.threads:
                 best = {}
+                styles = SETTLING_LAMMPS if settling else LAWS[law]["lammps"]
+                if settling:
+                    scene, unsorted, data = settling_files(work, law, *args.settling_grid)
                 for r in range(args.repeats):
-                    for pair, mode, title in LAWS[law]["lammps"]:
-                        m = lammps_hold(lmp, pair, mode, t, args.ncell, work, f"r{r}")
+                    for pair, mode, title in styles:
+                        if settling:
+                            m = lammps_settling(lmp, pair, mode, t, data, work, f"r{r}")
+                        else:
+                            m = lammps_hold(lmp, pair, mode, t, args.ncell, work, f"r{r}")
                         key = ("lammps", pair)
-                        if key not in best or m["loop_s"] < best[key]["loop_s"]:
+                        if key not in best or m["ns_per_contact_step"] < best[key]["ns_per_contact_step"]:
                             best[key] = dict(m, title=title, mode=mode)
                     for prec in args.precision:
+                        if settling:
+                            # before: an earlier build on the same scene, or this one unsorted
+                            runs = ((exe, ("epac", prec), scene),
+                                    (args.before_epac_run or exe, ("before", prec), scene if args.before_epac_run else unsorted))
+                            for x, key, sc in runs:
+                                m = epac_settling(x, sc, t, prec, work, f"{key[0]}.r{r}")
+                                if key not in best or m["ns_per_contact_step"] < best[key]["ns_per_contact_step"]:
+                                    best[key] = m
+                            continue
                         m = epac_hold(exe, law, t, prec, args.ncell, work, f"r{r}", order=order)
                         key = ("epac", prec)
                         if key not in best or m["loop_s"] < best[key]["loop_s"]:
@@ -237,7 +329,7 @@ def main():
                             key = ("before", prec)
                             if key not in best or m["loop_s"] < best[key]["loop_s"]:
                                 best[key] = m
-                    if args.before_epac_run:
+                    if args.before_epac_run and not settling:
                         for prec in args.precision:
                             m = epac_hold(args.before_epac_run, law, t, prec, args.ncell, work, f"before.r{r}")
                             key = ("before", prec)
@@ -257,7 +349,7 @@ def main():
                     if ("before", prec) in best:
                         row["before_ns"] = best[("before", prec)]["ns_per_contact_step"]
                         row["before_contacts"] = best[("before", prec)]["contacts"]
-                    for pair, mode, title in LAWS[law]["lammps"]:
+                    for pair, mode, title in styles:
                         l = best[("lammps", pair)]
                         row["peers"].append({"style": title, "pair_file": f"pair.{pair}", "threaded": mode == "omp",
                                              "lammps_ns": l["ns_per_contact_step"], "lammps_contacts": l["contacts"],
@@ -278,8 +370,14 @@ def main():
     if order:
         print(f"Scene: mixed (fcc ncell {args.ncell}, epac's particles shuffled); epac before = spatial_sort = false, "
               "epac = the default (auto)")
+    if settling:
+        nxy, nz = args.settling_grid
+        print(f"Scene: settling ({nxy * nxy * nz} spheres in a random order falling onto a floor, gravity "
+              f"{SETTLING_G:g} m/s^2, timed steps {SETTLING_WARM + 1}-{SETTLING_WARM + SETTLING_TIMED}; per pair "
+              "contact-step); " + ("epac before = --before-epac-run" if args.before_epac_run else
+                                  "epac before = spatial_sort = false, epac = the default (auto)"))
     print()
-    legacy = args.legacy_epac_run is not None or args.before_epac_run is not None or order is not None
+    legacy = args.legacy_epac_run is not None or args.before_epac_run is not None or args.scene != "fcc"
     print("| law | threads |" + (" epac before |" if legacy else "") + " epac |" + (" after / before |" if legacy else "")
           + " LAMMPS style | LAMMPS | speedup |")
     print("|---|---|" + ("---|---|" if legacy else "") + "---|---|---|---|")
@@ -295,7 +393,8 @@ def main():
                   f"{p['lammps_ns']:.1f} | {p['speedup']:.2f} |")
     if args.json:
         with open(args.json, "w") as f:
-            json.dump({"repeats": args.repeats, "ncell": args.ncell, "scene": args.scene, "build_flags": flags,
+            json.dump({"repeats": args.repeats, "ncell": args.ncell, "scene": args.scene,
+                       "settling_grid": args.settling_grid if settling else None, "build_flags": flags,
                        "results": results}, f, indent=1)
 
 
