@@ -39,13 +39,30 @@ KOKKOS_FORCEINLINE_FUNCTION int pair_table_index(const Particles<T, Device>& p, 
 // relative accuracy wherever the pair is, instead of the absolute spacing of its coordinates.
 // The *_exact forms also return the overlap in double, for the contact-point arms.
 namespace detail {
+// Centre i minus centre j (minimum image on periodic axes) and its length.
+template <class P>
+struct PairSeparation {
+  Vec3<P> d;
+  P dist;
+};
+template <class T, class Device>
+KOKKOS_FORCEINLINE_FUNCTION PairSeparation<typename Particles<T, Device>::position_type> pair_separation(
+    const Particles<T, Device>& p, int i, int j) {
+  PairSeparation<typename Particles<T, Device>::position_type> s;
+  s.d = load3(p.x, i) - load3(p.x, j);
+  if (p.box.periodic()) s.d = p.box.minimum_image(s.d);
+  s.dist = norm(s.d);
+  return s;
+}
+
+// The geometry from a separation already taken (the pair kernel tests the overlap first).
 template <class T, class Device, bool SideOrder>
-KOKKOS_FORCEINLINE_FUNCTION ContactGeometry<T> pair_geometry_exact(const Particles<T, Device>& p, int i, int j,
-                                                                   int nmat, double& delta) {
+KOKKOS_FORCEINLINE_FUNCTION ContactGeometry<T> pair_geometry_from(
+    const Particles<T, Device>& p, int i, int j, int nmat,
+    const PairSeparation<typename Particles<T, Device>::position_type>& s, double& delta) {
   using P = typename Particles<T, Device>::position_type;
-  Vec3<P> d = load3(p.x, i) - load3(p.x, j);
-  if (p.box.periodic()) d = p.box.minimum_image(d);
-  const P dist = norm(d);
+  const Vec3<P>& d = s.d;
+  const P dist = s.dist;
   ContactGeometry<T> g;
   g.i = i;
   g.j = j;
@@ -61,6 +78,12 @@ KOKKOS_FORCEINLINE_FUNCTION ContactGeometry<T> pair_geometry_exact(const Particl
   g.m_eff = mi * mj / (mi + mj);  // masses > 0 (host validation)
   if (SideOrder) g.i_is_first = p.gid(i) < p.gid(j);
   return g;
+}
+
+template <class T, class Device, bool SideOrder>
+KOKKOS_FORCEINLINE_FUNCTION ContactGeometry<T> pair_geometry_exact(const Particles<T, Device>& p, int i, int j,
+                                                                   int nmat, double& delta) {
+  return pair_geometry_from<T, Device, SideOrder>(p, i, j, nmat, pair_separation(p, i, j), delta);
 }
 
 // R* of a particle of radius R_i against a wall of curvature R_w (Walls::curvature), as LAMMPS
@@ -115,6 +138,23 @@ KOKKOS_FORCEINLINE_FUNCTION ContactGeometry<T> wall_geometry(const Particles<T, 
 
 namespace detail {
 
+// A contact the law found inactive: its tangential and rolling history forgotten, zero outputs.
+template <class Model, class T, class Device>
+KOKKOS_FORCEINLINE_FUNCTION void finish_inactive(const HistoryRow<T, Device>& row, T delta,
+                                                 const ContactOutputs<T, Device>& out,
+                                                 const ContactForceBuffer<T, Device>& buf, int k) {
+  const auto trow = row.shifted(Model::normal_history_size);
+  if (Model::effects::friction) reset_tangential(trow);
+  if (detail::rolling_on<Model>::value) reset_rolling(trow.shifted(Model::effects::friction ? 3 : 0));
+  if (out.normal_force.extent(0) > 0) out.normal_force(k) = T(0);
+  if (out.overlap.extent(0) > 0) out.overlap(k) = delta;
+  if (buf.enabled()) {
+    store3(buf.force, k, Vec3<T>());
+    store3(buf.torque_i, k, Vec3<T>());
+    store3(buf.torque_j, k, Vec3<T>());
+  }
+}
+
 // Shared tail of pair and wall contacts: the law, damping, friction, accumulation.
 // arm_i, arm_j: distances from the centres to the contact point along n (r_i = -arm_i n,
 // r_j = arm_j n), so the contact-point velocity and both torques need one cross product each.
@@ -147,15 +187,7 @@ KOKKOS_FORCEINLINE_FUNCTION void finish_contact(const Model& model, const Conv& 
   const auto trow = row.shifted(Model::normal_history_size);
   const auto rrow = trow.shifted(Eff::friction ? 3 : 0);  // rolling resistance's fields
   if (!nf.active) {
-    if (Eff::friction) reset_tangential(trow);
-    if (rolling) reset_rolling(rrow);
-    if (out.normal_force.extent(0) > 0) out.normal_force(k) = T(0);
-    if (out.overlap.extent(0) > 0) out.overlap(k) = g.delta;
-    if (buf.enabled()) {
-      store3(buf.force, k, Vec3<T>());
-      store3(buf.torque_i, k, Vec3<T>());
-      store3(buf.torque_j, k, Vec3<T>());
-    }
+    finish_inactive<Model>(row, g.delta, out, buf, k);
     return;
   }
   T fn = nf.f;
@@ -251,15 +283,30 @@ void pair_kernel(const Model& model, const Particles<T, Device>& p, const Contac
   Kokkos::parallel_for(
       "epac::compute_pair_forces", Kokkos::RangePolicy<exec>(0, c.count), KOKKOS_LAMBDA(int k) {
         int i = first(k), j = second(k);
+        auto sep = detail::pair_separation(p, i, j);
+        if constexpr (detail::inactive_apart<Model>::value) {
+          // a list entry that does not touch (the skin's): the law's own test (delta <= 0 in T)
+          // before any further load (the ids too) or division; the same result as the full path
+          // (the distance and R_i + R_j do not depend on the pair's orientation)
+          using P = typename Particles<T, Device>::position_type;
+          const double d0 = P(p.radius(i)) + P(p.radius(j)) - sep.dist;
+          if (T(d0) <= T(0)) {
+            detail::finish_inactive<Model>(HistoryRow<T, Device>{hdata, k, 0}, T(d0), out, buf, k);
+            return;
+          }
+        }
         const bool reversed = Canonical && p.gid(j) < p.gid(i);
         if (reversed) {
           const int t = i;
           i = j;
           j = t;
+          // x_j - x_i is exactly -(x_i - x_j), and so is its minimum image (PeriodicBox::image
+          // is odd): the same bits as taking the separation in this order
+          sep.d = -1.0 * sep.d;
         }
         // i_is_first stays true (its default): canonical orientation, or a law that ignores it
         double delta;  // the overlap before rounding to T: the arms below are double geometry too
-        ContactGeometry<T> g = detail::pair_geometry_exact<T, Device, false>(p, i, j, nmat, delta);
+        ContactGeometry<T> g = detail::pair_geometry_from<T, Device, false>(p, i, j, nmat, sep, delta);
         g.contact = k;
         g.dt = dt;
         const double half = 0.5 * delta;  // contact point: middle of the overlap zone

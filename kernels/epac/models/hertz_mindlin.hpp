@@ -31,6 +31,7 @@ struct HertzMindlin {
   using device_type = Device;
   static constexpr const char* name = "hertz_mindlin";
   static constexpr int normal_history_size = 0;
+  static constexpr bool inactive_apart = true;  // normal(): no force where delta <= 0
   // the tangential spring's 3 fields, then rolling resistance's 3 (compute/contact_forces.hpp)
   static constexpr int history_size = normal_history_size + (Eff::friction ? 3 : 0) + (Eff::rolling ? 3 : 0);
 

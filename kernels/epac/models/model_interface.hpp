@@ -15,6 +15,7 @@
 //   and, where declared, `using scalar_type = T;` equal to the particles' T.
 // Optional (a default where absent):
 //   static constexpr bool uses_side_order;          per-side history in global-id order (MDR)
+//   static constexpr bool inactive_apart;           no force and no normal history where delta <= 0
 //   void update_radii() const;                       particle update after each pass (MDR growth)
 //   guard_hits() const;                              counters summed by history_from_overlaps
 //   begin_deterministic_pass(int, int),
@@ -116,6 +117,17 @@ struct uses_side_order : std::false_type {};
 template <class M>
 struct uses_side_order<M, std::void_t<decltype(M::uses_side_order)>>
     : std::integral_constant<bool, M::uses_side_order> {};
+
+// Models whose normal() is inactive wherever the overlap is <= 0, whatever the history, and that
+// keep no normal history (Hertz-Mindlin, linear spring, JKR without adhesion) declare
+// `inactive_apart = true`: the pair kernel then skips everything after the distance for list
+// entries that do not touch, and contacts in lanes skip their loads (a list built with a skin
+// holds many; docs/performance.md).
+template <class M, class = void>
+struct inactive_apart : std::false_type {};
+template <class M>
+struct inactive_apart<M, std::void_t<decltype(M::inactive_apart)>>
+    : std::integral_constant<bool, M::inactive_apart && M::normal_history_size == 0> {};
 
 // The model's particle update after each pass (MDR: radius growth), if it has one.
 template <class M, class = void>

@@ -43,6 +43,7 @@ struct Jkr {
   static constexpr int root_field = 0;  // if adhesion: 0 apart, else the last radius root y
   static constexpr int r13_field = 1;   // if adhesion: 0 apart, else R*^(1/3) of the contact
   static constexpr int normal_history_size = Eff::adhesion ? 2 : 0;
+  static constexpr bool inactive_apart = !Eff::adhesion;  // Hertz without adhesion; adhesion pulls apart
   // the tangential spring's 3 fields, then rolling resistance's 3 (compute/contact_forces.hpp)
   static constexpr int history_size = normal_history_size + (Eff::friction ? 3 : 0) + (Eff::rolling ? 3 : 0);
 
