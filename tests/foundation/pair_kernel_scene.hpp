@@ -17,7 +17,6 @@
 namespace epac {
 namespace test {
 
-
 template <class T, class D>
 struct PairScene {
   Particles<T, D> p;

@@ -100,40 +100,20 @@ void pair_kernel_lanes(const Model& model, const Particles<T, Device>& p, const 
         for (int l = 0; l < W; ++l) {
           const int k = k0 + (l < lanes ? l : 0);
           int i = first(k), j = second(k);
-          Vec3<double> d = load3(p.x, i) - load3(p.x, j);
-          if (p.box.periodic()) d = p.box.minimum_image(d);
-          T R_i = p.radius(i), R_j = p.radius(j);
-          const double reach = double(R_i) + double(R_j);
-          // A list entry clearly apart (the skin's; the margin is far above the round-off of
-          // stage 2's distance) is inactive there whatever else its lane holds, for laws that
-          // declare it (models/model_interface.hpp): its velocities, spins, masses and history are
-          // not loaded, and stage 2 sees finite stand-ins. Its overlap output and reset history
-          // are the same bits (the distance and R_i + R_j do not depend on the orientation).
-          const bool skip = inactive_apart<Model>::value && l < lanes &&
-                            d.x * d.x + d.y * d.y + d.z * d.z > reach * reach * (1.0 + 1e-6);
-          if (friction && !skip && p.gid(j) < p.gid(i)) {  // history in the frame of the smaller global id
+          if (friction && p.gid(j) < p.gid(i)) {  // history in the frame of the smaller global id
             const int t = i;
             i = j;
             j = t;
-            const T R = R_i;
-            R_i = R_j;
-            R_j = R;
-            d = -1.0 * d;  // exactly x_i - x_j in the new order, minimum image too (image() is odd)
           }
           L_i[l] = i;
           L_j[l] = j;
+          Vec3<double> d = load3(p.x, i) - load3(p.x, j);
+          if (p.box.periodic()) d = p.box.minimum_image(d);
           L_dx[l] = d.x;
           L_dy[l] = d.y;
           L_dz[l] = d.z;
-          L_R_i[l] = R_i;
-          L_R_j[l] = R_j;
-          if (skip) {
-            L_m_i[l] = L_m_j[l] = T(1);
-            L_vx[l] = L_vy[l] = L_vz[l] = T(0);
-            L_wix[l] = L_wiy[l] = L_wiz[l] = L_wjx[l] = L_wjy[l] = L_wjz[l] = T(0);
-            L_hx[l] = L_hy[l] = L_hz[l] = T(0);
-            continue;
-          }
+          L_R_i[l] = p.radius(i);
+          L_R_j[l] = p.radius(j);
           L_m_i[l] = p.mass(i);
           L_m_j[l] = p.mass(j);
           L_vx[l] = p.v(i, 0) - p.v(j, 0);

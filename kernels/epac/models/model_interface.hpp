@@ -121,8 +121,7 @@ struct uses_side_order<M, std::void_t<decltype(M::uses_side_order)>>
 // Models whose normal() is inactive wherever the overlap is <= 0, whatever the history, and that
 // keep no normal history (Hertz-Mindlin, linear spring, JKR without adhesion) declare
 // `inactive_apart = true`: the pair kernel then skips everything after the distance for list
-// entries that do not touch, and contacts in lanes skip their loads (a list built with a skin
-// holds many; docs/performance.md).
+// entries that do not touch (a list built with a skin holds many; docs/performance.md).
 template <class M, class = void>
 struct inactive_apart : std::false_type {};
 template <class M>
