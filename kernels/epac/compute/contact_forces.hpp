@@ -185,7 +185,6 @@ KOKKOS_FORCEINLINE_FUNCTION void finish_contact(const Model& model, const Conv& 
     nf = model.normal(g, row);
   }
   const auto trow = row.shifted(Model::normal_history_size);
-  const auto rrow = trow.shifted(Eff::friction ? 3 : 0);  // rolling resistance's fields
   if (!nf.active) {
     finish_inactive<Model>(row, g.delta, out, buf, k);
     return;
@@ -232,6 +231,7 @@ KOKKOS_FORCEINLINE_FUNCTION void finish_contact(const Model& model, const Conv& 
     if (IsPair) rel_rot -= load3(p.omega, g.j);
     const Vec3<T> v_rl = g.R_eff * cross(rel_rot, g.n);
     const T f_c = conv.coulomb_on_damped ? fn : nf.f;
+    const auto rrow = trow.shifted(Eff::friction ? 3 : 0);  // rolling resistance's fields
     const Vec3<T> fr = rolling_sds_force(model.rolling.pairs(g.pair), g.n, v_rl, f_c, g.dt, rrow);
     t_roll = g.R_eff * cross(g.n, fr);
   }
