@@ -284,10 +284,12 @@ void pair_kernel(const Model& model, const Particles<T, Device>& p, const Contac
       "epac::compute_pair_forces", Kokkos::RangePolicy<exec>(0, c.count), KOKKOS_LAMBDA(int k) {
         int i = first(k), j = second(k);
         auto sep = detail::pair_separation(p, i, j);
-        if constexpr (detail::inactive_apart<Model>::value) {
+        if (detail::inactive_apart<Model>::value) {
           // a list entry that does not touch (the skin's): the law's own test (delta <= 0 in T)
           // before any further load (the ids too) or division; the same result as the full path
-          // (the distance and R_i + R_j do not depend on the pair's orientation)
+          // (the distance and R_i + R_j do not depend on the pair's orientation). A plain if on
+          // a constant: nvcc's extended lambdas cannot first-capture out and buf inside an
+          // if constexpr.
           using P = typename Particles<T, Device>::position_type;
           const double d0 = P(p.radius(i)) + P(p.radius(j)) - sep.dist;
           if (T(d0) <= T(0)) {
