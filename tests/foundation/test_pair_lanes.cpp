@@ -1,5 +1,6 @@
 // Contacts in lanes (compute/pair_lanes.hpp) against the one-contact kernel it replaces for
-// Hertz-Mindlin and the linear spring, on every backend, double and float: blocks of 8 (the host
+// Hertz-Mindlin, the linear spring, Nan 2022 and JKR (the last two: their common path in lanes,
+// the rest from the one-contact code), on every backend, double and float: blocks of 8 (the host
 // form) and of 1 (the GPU form) give the one-contact kernel's forces, torques, history and
 // outputs, whether or not this build vectorises them. The scene has what each stage must handle:
 // touching and separated pairs, pairs listed against the global-id order (the history frame), a
@@ -14,35 +15,60 @@
 #include "pair_kernel_scene.hpp"
 
 #include <epac/models/hertz_mindlin.hpp>
+#include <epac/models/jkr/jkr.hpp>
 #include <epac/models/linear_spring.hpp>
+#include <epac/models/nan2022/nan2022.hpp>
 
 using namespace epac;
 using namespace epac::test;
 
 namespace {
 
+// The one-contact kernel, lanes of 8 and of 1, and compute_pair_forces' choice, each run through
+// `run(kernel)` (a runner of passes taking the kernel form).
+struct FormResults {
+  PassResult scalar, lanes8, lanes1, dispatched;
+};
+template <class Model, class T, class D, class Run>
+FormResults run_forms(Run run) {
+  return {run([](auto&&... a) { detail::pair_kernel<Model::effects::friction>(a..., ContactForceBuffer<T, D>{}); }),
+          run([](auto&&... a) { detail::pair_kernel_lanes<8>(a...); }),
+          run([](auto&&... a) { detail::pair_kernel_lanes<1>(a...); }),
+          run([](auto&&... a) { compute_pair_forces(a...); })};
+}
+// The lanes kernel refuses the model on the host, before any kernel runs, naming why.
+template <class Model, class T, class D>
+void check_lanes_refuse(const Model& model, const char* why) {
+  auto s = pair_scene<T, D>(1.0, model.nmat);
+  ContactHistory<T, D> h(s.c.count, Model::history_size);
+  const ForceSums<T, D, AtomicSums> sums(s.p);
+  REQUIRE_THROWS_WITH(detail::pair_kernel_lanes<8>(model, s.p, s.c, h, T(1e-7), sums, ContactOutputs<T, D>{}),
+                      Catch::Contains(why));
+}
+
+void check_forms_agree(const FormResults& r, double rel) {
+  for (const auto* other : {&r.lanes8, &r.lanes1, &r.dispatched}) {
+    check_close(r.scalar.force, other->force, rel, "force");
+    check_close(r.scalar.torque, other->torque, rel, "torque");
+    check_close(r.scalar.history, other->history, rel, "history");
+    check_close(r.scalar.normal_force, other->normal_force, rel, "normal force output");
+    check_close(r.scalar.overlap, other->overlap, rel, "overlap output");
+  }
+}
+
 template <class Model, class T, class D>
 void compare_forms(const Model& model, double speed) {
   const double rel = std::is_same<T, float>::value ? 2e-5 : 1e-12;
-  auto scalar = run_passes<Model, T, D>(model, speed, [](auto&&... a) {
-    detail::pair_kernel<Model::effects::friction>(a..., ContactForceBuffer<T, D>{});
-  });
-  auto lanes8 = run_passes<Model, T, D>(model, speed, [](auto&&... a) { detail::pair_kernel_lanes<8>(a...); });
-  auto lanes1 = run_passes<Model, T, D>(model, speed, [](auto&&... a) { detail::pair_kernel_lanes<1>(a...); });
-  auto dispatched = run_passes<Model, T, D>(model, speed, [](auto&&... a) { compute_pair_forces(a...); });
+  const FormResults r =
+      run_forms<Model, T, D>([&](auto kernel) { return run_passes<Model, T, D>(model, speed, kernel); });
+  const PassResult& scalar = r.scalar;
   // the scene has both touching and separated contacts, and real forces and torques
   const auto touching = std::count_if(scalar.overlap.begin(), scalar.overlap.end(), [](double d) { return d > 0; });
   REQUIRE(touching > 100);
   REQUIRE(touching < static_cast<long>(scalar.overlap.size()) - 100);
   REQUIRE(max_abs(scalar.force) > 0);
   if (Model::effects::friction) REQUIRE(max_abs(scalar.torque) > 0);
-  for (const auto* other : {&lanes8, &lanes1, &dispatched}) {
-    check_close(scalar.force, other->force, rel, "force");
-    check_close(scalar.torque, other->torque, rel, "torque");
-    check_close(scalar.history, other->history, rel, "history");
-    check_close(scalar.normal_force, other->normal_force, rel, "normal force output");
-    check_close(scalar.overlap, other->overlap, rel, "overlap output");
-  }
+  check_forms_agree(r, rel);
 }
 
 }  // namespace
@@ -88,11 +114,7 @@ TEMPLATE_LIST_TEST_CASE("contacts in lanes: two materials take the one-contact k
   check_close(scalar.torque, dispatched.torque, rel, "torque");
   check_close(scalar.history, dispatched.history, rel, "history");
   // the lanes kernel itself refuses them, on the host, before any kernel runs
-  auto s = pair_scene<T, D>(1.0, 2);
-  ContactHistory<T, D> h(s.c.count, Model::history_size);
-  const ForceSums<T, D, AtomicSums> sums(s.p);
-  REQUIRE_THROWS_WITH(detail::pair_kernel_lanes<8>(model, s.p, s.c, h, T(1e-7), sums, ContactOutputs<T, D>{}),
-                      Catch::Contains("model.nmat is 2"));
+  check_lanes_refuse<Model, T, D>(model, "model.nmat is 2");
 }
 
 TEMPLATE_LIST_TEST_CASE("contacts in lanes: the sliding lanes are the one-contact kernel's", "[lanes]",
@@ -126,4 +148,143 @@ TEMPLATE_LIST_TEST_CASE("contacts in lanes: the sliding lanes are the one-contac
   }
   REQUIRE(loaded > 100);
   CHECK(sliding > 9 * loaded / 10);
+}
+
+namespace {
+
+// Nan 2022's lane form covers the contacts in contact on a known line; the rest take the
+// one-contact code in the same block. The packing is moved between passes (positions scaled
+// about the origin) so that every branch occurs: first contact, plastic loading, the first
+// unloading step after yield (line not yet kept), unloading on the kept line, the cohesive
+// branch, detachment and re-loading after unloading.
+const double nan_schedule[] = {1.0, 1.0, 1.0, 1.035, 1.0, 0.995, 0.995, 0.9952, 0.9955, 0.996, 0.996};
+
+// Forces, torques and outputs of every pass, appended; the history after the last.
+template <class Model, class T, class D, class Kernel>
+PassResult run_schedule(const Model& model, Kernel kernel, std::vector<double>* history_before_last = nullptr) {
+  auto s = pair_scene<T, D>(1.0, model.nmat);
+  auto x = Kokkos::create_mirror_view(s.p.x);  // on host backends: the positions themselves
+  Kokkos::deep_copy(x, s.p.x);
+  const std::vector<double> x0(x.data(), x.data() + x.span());
+  ContactHistory<T, D> h(s.c.count, Model::history_size);
+  ContactOutputs<T, D> out{Kokkos::View<T*, D>("fn", s.c.count), Kokkos::View<T*, D>("delta", s.c.count)};
+  const ForceSums<T, D, AtomicSums> sums(s.p);
+  auto append = [](std::vector<double>& to, const auto& view) {
+    auto hv = test::to_host(view);
+    for (std::size_t e = 0; e < hv.span(); ++e) to.push_back(double(hv.data()[e]));
+  };
+  PassResult r;
+  const int passes = static_cast<int>(sizeof(nan_schedule) / sizeof(nan_schedule[0]));
+  for (int pass = 0; pass < passes; ++pass) {
+    for (std::size_t e = 0; e < x.span(); ++e) x.data()[e] = x0[e] * nan_schedule[pass];
+    Kokkos::deep_copy(s.p.x, x);
+    if (pass == passes - 1 && history_before_last) {
+      auto hh = test::to_host(h.data);
+      history_before_last->assign(hh.data(), hh.data() + hh.span());
+    }
+    zero_forces(s.p);
+    kernel(model, s.p, s.c, h, T(2e-7), sums, out);
+    append(r.force, s.p.force);
+    append(r.torque, s.p.torque);
+    append(r.normal_force, out.normal_force);
+    append(r.overlap, out.overlap);
+  }
+  append(r.history, h.data);
+  return r;
+}
+
+// The law's constants for lanes, read on the host.
+template <class T, class E, class D>
+Nan2022LanePair<T> host_lane_pair(const Nan2022<T, E, D>& m) {
+  return nan2022_lane_pair(test::to_host(m.pairs)(0), test::to_host(m.derived)(0));
+}
+template <class T, class E, class D>
+JkrPair<T> host_lane_pair(const Jkr<T, E, D>& m) {
+  return test::to_host(m.pairs)(0);
+}
+
+// A law with normal history in lanes against the one-contact kernel over the schedule, and the
+// lane form's own verdict on the last pass: both kinds of lane occur (>= 100 common, >= 10 rare)
+// and, where `pulling` is set, adhesive forces (all from rare lanes for Nan 2022).
+template <class Model, class T, class D>
+void compare_history_forms(const Model& model, bool pulling_expected) {
+  const double rel = std::is_same<T, float>::value ? 2e-5 : 1e-12;
+  REQUIRE(model.lane_form_applies());
+  std::vector<double> h_last;  // the one-contact kernel's (the first run), before its last pass
+  const FormResults r = run_forms<Model, T, D>(
+      [&](auto kernel) { return run_schedule<Model, T, D>(model, kernel, h_last.empty() ? &h_last : nullptr); });
+  const PassResult& scalar = r.scalar;
+  const int count = static_cast<int>(h_last.size()) / Model::history_size;
+  const std::size_t last = scalar.overlap.size() - static_cast<std::size_t>(count);
+  const auto lp = host_lane_pair(model);
+  auto scene = pair_scene<T, D>(1.0);
+  auto radius = test::to_host(scene.p.radius);
+  auto first = test::to_host(scene.c.first);
+  auto second = test::to_host(scene.c.second);
+  int common = 0, rare = 0, pulling = 0;
+  for (int k = 0; k < count; ++k) {
+    const T R_i = radius(first(k)), R_j = radius(second(k));
+    LaneHistory<T, Model::normal_history_size> lh;
+    for (int f = 0; f < Model::normal_history_size; ++f) lh.v[f] = T(h_last[static_cast<std::size_t>(f) * count + k]);
+    lh.rare = false;
+    // R* as the kernel takes it (the scene's radii are fixed; the expression is symmetric)
+    Model::normal_lane(lp, T(scalar.overlap[last + k]), R_i * R_j / (R_i + R_j), lh);
+    (lh.rare ? rare : common) += 1;
+  }
+  for (double f : scalar.normal_force) pulling += f < 0;
+  CAPTURE(common, rare, pulling);
+  CHECK(common >= 100);
+  CHECK(rare >= 10);
+  if (pulling_expected) CHECK(pulling >= 5);
+  check_forms_agree(r, rel);
+}
+
+}  // namespace
+
+TEMPLATE_LIST_TEST_CASE("contacts in lanes: Nan 2022's common path and its rare contacts", "[lanes]",
+                        test::BackendsAndScalars) {
+  using D = typename TestType::device;
+  using T = typename TestType::scalar;
+  using Full = Nan2022<T, Effects<kAdhesion | kPlasticity | kFriction | kDamping>, D>;
+  STATIC_REQUIRE(detail::runs_in_lanes<Full>::value);
+  STATIC_REQUIRE(detail::runs_in_lanes<Nan2022<T, Effects<kAdhesion>, D>>::value);
+  // without adhesion every step takes the detached state's path: no lane form
+  STATIC_REQUIRE_FALSE(detail::runs_in_lanes<Nan2022<T, Effects<kPlasticity | kFriction>, D>>::value);
+  auto mats = pair_materials<T>(0.5);
+  mats[0].surface_energy = 50.0;
+  mats[0].yield_stress = 2e8;
+  SECTION("the full model") { compare_history_forms<Full, T, D>(Full::create(mats), true); }
+  SECTION("adhesion alone (no plasticity, friction or damping)") {
+    // elastic lines leave almost no room for the cohesive branch in this scene: no pulling required
+    using Model = Nan2022<T, Effects<kAdhesion>, D>;
+    compare_history_forms<Model, T, D>(Model::create(mats), false);
+  }
+  SECTION("a fixed k_el keeps the one-contact kernel") {
+    Nan2022Options opt;
+    opt.k_el_from = Nan2022ElasticStiffnessFrom::fixed;
+    opt.k_el = 1e5;
+    const auto model = Full::create(mats, opt);
+    CHECK_FALSE(model.lane_form_applies());
+    check_lanes_refuse<Full, T, D>(model, "lane_form_applies");
+  }
+}
+
+TEMPLATE_LIST_TEST_CASE("contacts in lanes: JKR's warm-started root and its rare contacts", "[lanes]",
+                        test::BackendsAndScalars) {
+  using D = typename TestType::device;
+  using T = typename TestType::scalar;
+  using Full = Jkr<T, Effects<kAdhesion | kFriction | kDamping>, D>;
+  STATIC_REQUIRE(detail::runs_in_lanes<Full>::value);
+  STATIC_REQUIRE(detail::runs_in_lanes<Jkr<T, Effects<kAdhesion>, D>>::value);
+  STATIC_REQUIRE_FALSE(detail::runs_in_lanes<Jkr<T, Effects<kFriction | kDamping>, D>>::value);
+  auto mats = pair_materials<T>(0.5);
+  mats[0].surface_energy = 50.0;
+  SECTION("friction and damping") { compare_history_forms<Full, T, D>(Full::create(mats), true); }
+  SECTION("adhesion alone") {
+    using Model = Jkr<T, Effects<kAdhesion>, D>;
+    compare_history_forms<Model, T, D>(Model::create(mats), true);
+  }
+  SECTION("no surface energy keeps the one-contact kernel") {
+    CHECK_FALSE(Full::create(pair_materials<T>(0.5)).lane_form_applies());
+  }
 }

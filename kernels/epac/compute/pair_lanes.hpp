@@ -1,24 +1,34 @@
 #pragma once
-// Contacts in lanes: the pair kernel of compute/contact_forces.hpp for laws whose normal force is
-// a branch-free function of the pair's constants, the overlap and R* (a `normal_lane` member,
-// e.g. models/hertz_mindlin.hpp), that keep no normal history or rolling resistance, in scenes
-// of one material (the pair's constants are then the same for every lane; with several, the
-// lanes' gathered constants have no vector load and the one-contact kernel is faster).
+// Contacts in lanes: the pair kernel of compute/contact_forces.hpp for laws whose normal force has
+// a branch-free form in the pair's constants, the overlap and R* (a `normal_lane` member), with
+// no rolling resistance, in scenes of one material (the pair's constants are then the same for
+// every lane; with several, the lanes' gathered constants have no vector load and the
+// one-contact kernel is faster). Two kinds of lane form:
+//   - without normal history, the whole law (models/hertz_mindlin.hpp);
+//   - with normal history, the law's common path only (models/nan2022/nan2022.hpp: loading and
+//     unloading in contact): the lane form rewrites the history fields and flags the lanes its
+//     common path does not cover, which then take the one-contact kernel's code.
+// The law returns its constants for lanes from `lane_pair(0)`, and may declare
+// `static constexpr bool lane_form` (false: no lanes for this effect set) and a host member
+// `bool lane_form_applies() const` (false: no lanes for these parameters).
 //
 // One work item takes a block of W contacts (core/simd_lanes.hpp: 8 on host backends that
-// vectorise the block, 1 on GPUs, where this is one thread per contact). Four stages per block:
-//   1. gather (scalar): the list entries, both particles' state and the tangential history into
-//      lane arrays;
+// vectorise the block, 1 on GPUs, where this is one thread per contact). Five stages per block:
+//   1. gather (scalar): the list entries, both particles' state and the history into lane arrays;
 //   2. the common path (one loop over the lanes, vectorised by the host compiler): geometry, the
 //      law, damping and the sticking spring, with selects in place of tests;
-//   3. the rare path (scalar): Coulomb sliding, only for the lanes that slide;
-//   4. scatter (scalar): history, outputs and the particle sums.
+//   3. the law's rare lanes (scalar, laws with normal history): the one-contact kernel's
+//      finish_contact, which stores and adds that contact itself;
+//   4. Coulomb sliding (scalar), only for the lanes that slide;
+//   5. scatter (scalar): history, outputs and the particle sums.
 // The divisions and roots of one contact (the latency chains that bound the scalar kernel,
 // docs/performance.md) then run side by side for W contacts. Each lane computes the scalar
 // kernel's expressions in its order with exact selects (lane_select), so without FMA
 // contraction the results are its bits; with contraction (-march=native) the compiler may fuse
 // the two forms differently (tests/foundation/test_pair_lanes.cpp compares them).
 #include <epac/compute/contact_outputs.hpp>
+#include <epac/compute/finish_contact.hpp>
+#include <epac/compute/pair_wall_geometry.hpp>
 #include <epac/compute/particle_sums.hpp>
 #include <epac/core/simd_lanes.hpp>
 #include <epac/core/vec3.hpp>
@@ -38,6 +48,10 @@
 namespace epac {
 namespace detail {
 
+// The lane history of law M (one unused field for laws without normal history).
+template <class M>
+using lane_history_t = LaneHistory<typename M::scalar_type, (M::normal_history_size > 0 ? M::normal_history_size : 1)>;
+
 template <class M, class = void>
 struct has_normal_lane : std::false_type {};
 template <class M>
@@ -46,17 +60,60 @@ struct has_normal_lane<M, std::void_t<typename M::lane_constants,
                                                               std::declval<typename M::scalar_type>(),
                                                               std::declval<typename M::scalar_type>()))>>
     : std::true_type {};
+template <class M, class = void>
+struct has_history_lane : std::false_type {};
+template <class M>
+struct has_history_lane<
+    M, std::void_t<typename M::lane_constants,
+                   decltype(M::normal_lane(
+                       std::declval<const typename M::lane_constants&>(), std::declval<typename M::scalar_type>(),
+                       std::declval<typename M::scalar_type>(), std::declval<lane_history_t<M>&>()))>>
+    : std::true_type {};
+template <class M, class = void>
+struct lane_form_declared : std::true_type {};
+template <class M>
+struct lane_form_declared<M, std::void_t<decltype(M::lane_form)>> : std::integral_constant<bool, M::lane_form> {};
 
-// Laws the lanes kernel computes exactly as the scalar kernel: a normal_lane, no normal history,
-// no rolling resistance, no side order, the generic conventions around the normal force.
+// Laws the lanes kernel computes exactly as the scalar kernel: a lane form (of the kind its
+// normal history needs), no rolling resistance, no side order, the generic conventions around
+// the normal force.
 template <class M>
 struct runs_in_lanes
     : std::integral_constant<
-          bool, has_normal_lane<M>::value && M::normal_history_size == 0 && !rolling_on<M>::value &&
-                    !uses_side_order<M>::value &&
+          bool, lane_form_declared<M>::value &&
+                    (M::normal_history_size == 0 ? has_normal_lane<M>::value : has_history_lane<M>::value) &&
+                    !rolling_on<M>::value && !uses_side_order<M>::value &&
                     std::is_same<typename contact_conventions<M>::type, GenericContactConventions>::value> {};
 
-// One block's lane arrays (stage 1 fills them, stage 2 reads and overwrites them).
+// The lane form of either kind (a struct: the kernel's lambda cannot hold an if constexpr).
+template <class M, bool History = (M::normal_history_size > 0)>
+struct lane_law {
+  template <class P, class T, class H>
+  KOKKOS_FORCEINLINE_FUNCTION static NormalForce<T> eval(const P& pair, T delta, T R_eff, H&) {
+    return M::normal_lane(pair, delta, R_eff);
+  }
+};
+template <class M>
+struct lane_law<M, true> {
+  template <class P, class T, class H>
+  KOKKOS_FORCEINLINE_FUNCTION static NormalForce<T> eval(const P& pair, T delta, T R_eff, H& hist) {
+    return M::normal_lane(pair, delta, R_eff, hist);
+  }
+};
+
+// Host: whether the law's lane form holds for this model's parameters (default: always).
+template <class M, class = void>
+struct has_lane_form_applies : std::false_type {};
+template <class M>
+struct has_lane_form_applies<M, std::void_t<decltype(std::declval<const M&>().lane_form_applies())>> : std::true_type {
+};
+template <class M>
+bool lane_form_applies(const M& model) {  // host
+  if constexpr (has_lane_form_applies<M>::value)
+    return model.lane_form_applies();
+  else
+    return true;
+}
 
 template <int W, class Model, class T, class Device, class Policy>
 void pair_kernel_lanes(const Model& model, const Particles<T, Device>& p, const ContactList<Device>& c,
@@ -67,18 +124,26 @@ void pair_kernel_lanes(const Model& model, const Particles<T, Device>& p, const 
   if (model.nmat != 1)  // host: compute_pair_forces takes this kernel only for one material
     throw std::invalid_argument("epac: pair_kernel_lanes: model.nmat is " + std::to_string(model.nmat) +
                                 "; contacts in lanes take one material (nmat = 1)");
+  if (!lane_form_applies(model))  // host: nor for parameters outside the law's lane form
+    throw std::invalid_argument(std::string("epac: pair_kernel_lanes: the ") + Model::name +
+                                " lane form does not hold for this model's parameters (lane_form_applies)");
   using exec = typename Device::execution_space;
   using Eff = typename Model::effects;
   using Pair = typename Model::lane_constants;
+  using History = lane_history_t<Model>;
   constexpr bool friction = Eff::friction;
+  constexpr int NH = Model::normal_history_size;  // the tangential spring's fields follow
+  constexpr int NHL = NH > 0 ? NH : 1;
   const int count = c.count;
   const auto fsum = sums.force.scatter;
   const auto tsum = sums.torque.scatter;
   const auto first = c.first;
   const auto second = c.second;
-  const auto pairs = model.pairs;
+  const auto conv = contact_conventions<Model>::of(model);
+  const ContactForceBuffer<T, Device> nobuf{};  // the rare lanes add into the sums, as the lanes
+  const auto hdata = h.data;
   T* const hist = h.data.data();
-  const std::size_t hstride = friction ? h.data.stride(1) : 0;
+  const std::size_t hstride = (friction || NH > 0) ? h.data.stride(1) : 0;
   const auto out_fn = out.normal_force;
   const auto out_delta = out.overlap;
   Kokkos::parallel_for(
@@ -95,6 +160,7 @@ void pair_kernel_lanes(const Model& model, const Particles<T, Device>& p, const 
         T L_ftx[W], L_fty[W], L_ftz[W], L_f_lim[W], L_ft2[W], L_k_t[W];
         T L_arm_i[W], L_arm_j[W];
         T L_active[W], L_slides[W];  // flags as T (1 or 0): the vectors' element size
+        T L_nh[NHL][W], L_rare[W];
         // 1. gather; lanes past the list's end repeat the block's first contact (finite
         //    arithmetic, nothing stored)
         for (int l = 0; l < W; ++l) {
@@ -125,14 +191,15 @@ void pair_kernel_lanes(const Model& model, const Particles<T, Device>& p, const 
           L_wjx[l] = p.omega(j, 0);
           L_wjy[l] = p.omega(j, 1);
           L_wjz[l] = p.omega(j, 2);
+          for (int f = 0; f < NH; ++f) L_nh[f][l] = hist[k + f * hstride];
           if (friction) {
-            L_hx[l] = hist[k];
-            L_hy[l] = hist[k + hstride];
-            L_hz[l] = hist[k + 2 * hstride];
+            L_hx[l] = hist[k + NH * hstride];
+            L_hy[l] = hist[k + (NH + 1) * hstride];
+            L_hz[l] = hist[k + (NH + 2) * hstride];
           }
         }
         // 2. the common path, vectorised on host backends
-        const Pair pair = pairs(0);  // one material
+        const Pair pair = model.lane_pair(0);  // one material
         for (int l = 0; l < W; ++l) {
           const double dist = math::sqrt(L_dx[l] * L_dx[l] + L_dy[l] * L_dy[l] + L_dz[l] * L_dz[l]);
           // coincident centres have no normal: x, as pair_geometry_exact (the 1 keeps 1/dist finite)
@@ -149,7 +216,12 @@ void pair_kernel_lanes(const Model& model, const Particles<T, Device>& p, const 
               arm_i * Vec3<T>(L_wix[l], L_wiy[l], L_wiz[l]) + arm_j * Vec3<T>(L_wjx[l], L_wjy[l], L_wjz[l]);
           const Vec3<T> v_c = Vec3<T>(L_vx[l], L_vy[l], L_vz[l]) - cross(w_arm, n);
           const T vn = dot(v_c, n);
-          const NormalForce<T> nf = Model::normal_lane(pair, T(delta), R_eff);
+          History lh;
+          for (int f = 0; f < NH; ++f) lh.v[f] = L_nh[f][l];
+          lh.rare = false;
+          const NormalForce<T> nf = lane_law<Model>::eval(pair, T(delta), R_eff, lh);
+          for (int f = 0; f < NH; ++f) L_nh[f][l] = lh.v[f];
+          L_rare[l] = lane_select(lh.rare, T(1), T(0));
           T fn = nf.f;
           T root_mkn = T(0);
           if (Eff::damping) {                                       // as finish_contact, with the generic conventions
@@ -175,7 +247,7 @@ void pair_kernel_lanes(const Model& model, const Particles<T, Device>& p, const 
           L_fn[l] = lane_select(nf.active, fn, T(0));
           L_active[l] = lane_select(nf.active, T(1), T(0));
           const T f_lim2 = f_lim * f_lim;
-          L_slides[l] = lane_select(nf.active & (ft2 > f_lim2), T(1), T(0));  // & not &&: no branch
+          L_slides[l] = lane_select(nf.active & !lh.rare & (ft2 > f_lim2), T(1), T(0));  // & not &&: no branch
           L_ftx[l] = tt.ft.x;
           L_fty[l] = tt.ft.y;
           L_ftz[l] = tt.ft.z;
@@ -189,7 +261,23 @@ void pair_kernel_lanes(const Model& model, const Particles<T, Device>& p, const 
           L_hy[l] = lane_select(nf.active, tt.xi.y, T(0));
           L_hz[l] = lane_select(nf.active, tt.xi.z, T(0));
         }
-        // 3. the rare path: Coulomb sliding, Nan (23)
+        auto fa = fsum.access();
+        auto ta = tsum.access();
+        // 3. the law's rare lanes: the one-contact kernel's code from the stored history (a plain
+        //    if on a constant: nvcc's extended lambdas cannot first-capture inside if constexpr)
+        if (NH > 0)
+          for (int l = 0; l < lanes; ++l) {
+            if (L_rare[l] == T(0)) continue;
+            const int k = k0 + l, i = L_i[l], j = L_j[l];
+            double delta;
+            ContactGeometry<T> g = pair_geometry_from<T, Device, false>(p, i, j, 1, pair_separation(p, i, j), delta);
+            g.contact = k;
+            g.dt = dt;
+            const double half = 0.5 * delta;
+            finish_contact<true>(model, conv, p, g, Vec3<T>(L_vx[l], L_vy[l], L_vz[l]), T(double(g.R_i) - half),
+                                 T(double(g.R_j) - half), HistoryRow<T, Device>{hdata, k, 0}, out, nobuf, k, fa, ta);
+          }
+        // 4. Coulomb sliding, Nan (23)
         if (friction)
           for (int l = 0; l < lanes; ++l) {
             if (L_slides[l] == T(0)) continue;
@@ -202,15 +290,15 @@ void pair_kernel_lanes(const Model& model, const Particles<T, Device>& p, const 
             L_hy[l] = xi.y;
             L_hz[l] = xi.z;
           }
-        // 4. scatter
-        auto fa = fsum.access();
-        auto ta = tsum.access();
+        // 5. scatter (the rare lanes are done)
         for (int l = 0; l < lanes; ++l) {
           const int k = k0 + l;
+          if (NH > 0 && L_rare[l] != T(0)) continue;
+          for (int f = 0; f < NH; ++f) hist[k + f * hstride] = L_nh[f][l];
           if (friction) {
-            hist[k] = L_hx[l];
-            hist[k + hstride] = L_hy[l];
-            hist[k + 2 * hstride] = L_hz[l];
+            hist[k + NH * hstride] = L_hx[l];
+            hist[k + (NH + 1) * hstride] = L_hy[l];
+            hist[k + (NH + 2) * hstride] = L_hz[l];
           }
           if (out_fn.extent(0) > 0) out_fn(k) = L_fn[l];
           if (out_delta.extent(0) > 0) out_delta(k) = L_delta[l];

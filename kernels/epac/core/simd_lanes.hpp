@@ -51,5 +51,18 @@ template <class T>
 KOKKOS_FORCEINLINE_FUNCTION T lane_max(T a, T b) {
   return lane_select(a < b, b, a);  // math::max's result, as a select
 }
+template <class T>
+KOKKOS_FORCEINLINE_FUNCTION T lane_min(T a, T b) {
+  return lane_select(b < a, b, a);  // math::min's result, as a select
+}
+
+// One lane's normal history for a law's lane form with history (compute/pair_lanes.hpp): the
+// law reads and rewrites the N fields and sets `rare` where its common path does not hold (the
+// kernel then takes the law's scalar normal() for that lane, from the stored row).
+template <class T, int N>
+struct LaneHistory {
+  T v[N];
+  bool rare;
+};
 
 }  // namespace epac

@@ -48,6 +48,7 @@ struct HertzMindlin {
   // (compute/pair_lanes.hpp) take it for a block of contacts at once; normal() is its scalar
   // form (the same bits where delta > 0). Domain: the root of R* max(delta, 0) >= 0.
   using lane_constants = HertzMindlinPair<T>;
+  KOKKOS_FORCEINLINE_FUNCTION lane_constants lane_pair(int k) const { return pairs(k); }
   KOKKOS_FORCEINLINE_FUNCTION static NormalForce<T> normal_lane(const HertzMindlinPair<T>& p, T delta, T R_eff) {
     NormalForce<T> r;
     const T a = math::sqrt(R_eff * lane_max(delta, T(0)));  // Hertz contact radius

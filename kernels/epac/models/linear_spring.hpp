@@ -41,6 +41,7 @@ struct LinearSpring {
   // The law of one contact from its pair's constants, without branches (contacts in lanes,
   // compute/pair_lanes.hpp); normal() is its scalar form (the same bits where delta > 0).
   using lane_constants = LinearSpringPair<T>;
+  KOKKOS_FORCEINLINE_FUNCTION lane_constants lane_pair(int k) const { return pairs(k); }
   KOKKOS_FORCEINLINE_FUNCTION static NormalForce<T> normal_lane(const LinearSpringPair<T>& p, T delta, T /*R_eff*/) {
     NormalForce<T> r;
     r.active = delta > T(0);

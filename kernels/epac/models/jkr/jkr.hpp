@@ -18,6 +18,7 @@
 #include <epac/models/contact_geometry.hpp>
 #include <epac/models/effects.hpp>
 #include <epac/models/rolling_resistance.hpp>
+#include <epac/core/simd_lanes.hpp>
 #include <epac/models/jkr/detail/jkr_contact_radius.hpp>
 #include <epac/params/material.hpp>
 #include <epac/params/restitution_damping.hpp>
@@ -50,6 +51,7 @@ struct Jkr {
   Kokkos::View<JkrPair<T>*, Device> pairs;
   int nmat = 0;
   RollingTable<T, Device, Eff::rolling> rolling;  // per material pair; empty unless Eff::rolling
+  bool lanes_hold = false;                        // host: one adhesive material (lane_form_applies)
 
   KOKKOS_FORCEINLINE_FUNCTION NormalForce<T> normal(const ContactGeometry<T>& g,
                                                     const HistoryRow<T, Device>& row) const {
@@ -86,6 +88,37 @@ struct Jkr {
       a = math::sqrt(g.R_eff * g.delta);  // Hertz
       r.f = T(4) / T(3) * p.E_star * a * g.delta;
     }
+    return contact_force(p, r.f, a);
+  }
+
+  // Contacts in lanes (compute/pair_lanes.hpp): the common path of the adhesive law without
+  // branches, a contact that stays in contact and whose warm-started root converges
+  // (detail/jkr_contact_radius.hpp, jkr_contact_radius_lane); the rest (forming, breaking, a
+  // root that needs the closed form) is flagged rare and takes normal(). One material with
+  // Gamma > 0.
+  static constexpr bool lane_form = Eff::adhesion;
+  using lane_constants = JkrPair<T>;
+  KOKKOS_FORCEINLINE_FUNCTION lane_constants lane_pair(int k) const { return pairs(k); }
+  bool lane_form_applies() const { return lanes_hold; }  // host
+  template <int N>
+  KOKKOS_FORCEINLINE_FUNCTION static NormalForce<T> normal_lane(const JkrPair<T>& p, T delta, T R_eff,
+                                                                LaneHistory<T, N>& hist) {
+    static_assert(N == normal_history_size, "epac: Jkr::normal_lane: one lane field per history field");
+    const T y_last = hist.v[root_field], r13 = hist.v[r13_field];
+    const bool kept = (y_last > T(0)) & (r13 > T(0));  // in contact, root and R*^(1/3) kept
+    const JkrScales<T> s = jkr_scales_from_root(p.a0_coeff, r13, p.surface_energy, R_eff);
+    const T d = delta / lane_select(kept, s.delta_s, T(1));  // delta_s > 0 where kept
+    bool converged = false;
+    const T y = jkr_contact_radius_lane(d, y_last, converged);
+    hist.rare = !(kept & converged);
+    hist.v[root_field] = y;
+    return contact_force(p, s.f_ce * jkr_force_ratio_of_root(y), y * y * s.a0);
+  }
+
+  // An active contact's NormalForce from the law's force f and contact radius a.
+  KOKKOS_FORCEINLINE_FUNCTION static NormalForce<T> contact_force(const JkrPair<T>& p, T f, T a) {
+    NormalForce<T> r;
+    r.f = f;
     r.active = true;
     r.k_n = T(2) * p.E_star * a;
     if (Eff::damping) {
@@ -132,6 +165,7 @@ struct Jkr {
       }
     Kokkos::deep_copy(m.pairs, h);
     m.rolling = RollingTable<T, Device, Eff::rolling>::create(materials);
+    m.lanes_hold = m.nmat == 1 && h(0).surface_energy > T(0);
     return m;
   }
 };

@@ -13,6 +13,7 @@
 #include <epac/models/contact_geometry.hpp>
 #include <epac/models/effects.hpp>
 #include <epac/models/rolling_resistance.hpp>
+#include <epac/models/nan2022/detail/nan2022_lane_form.hpp>
 #include <epac/models/nan2022/detail/nan2022_normal_law.hpp>
 #include <epac/params/nan2022/nan2022_parameters.hpp>
 #include <epac/state/contact_history.hpp>
@@ -39,6 +40,7 @@ struct Nan2022 {
   Kokkos::View<Nan2022PairDerived<T>*, Device> derived;  // the roots of pairs(k), taken on the host
   int nmat = 0;
   RollingTable<T, Device, Eff::rolling> rolling;  // per material pair; empty unless Eff::rolling
+  bool lanes_hold = false;                        // host: one material whose pair has the lane form (lane_form_applies)
 
   KOKKOS_FORCEINLINE_FUNCTION NormalForce<T> normal(const ContactGeometry<T>& g,
                                                     const HistoryRow<T, Device>& row) const {
@@ -60,20 +62,51 @@ struct Nan2022 {
       row(line_alpha_p_field) = line_alpha_p;
     }
     if (Eff::adhesion) row(state_field) = cs;
+    if (!s.active) return NormalForce<T>();
+    return contact_force(s.f, s.k_n, s.yielded ? p.beta_yielded : T(1), p.damping_ratio, p.kt_over_kn, d.kt_root, p.mu);
+  }
+
+  // Contacts in lanes (compute/pair_lanes.hpp): the law's common path without branches
+  // (detail/nan2022_lane_form.hpp), for the full model's state machine (adhesion compiled in:
+  // without it every step takes the detached state's path, which has no common form) and one
+  // material with Nan (52)'s k_el. `hist` holds the normal history fields; `hist.rare` sends the
+  // contact to normal().
+  static constexpr bool lane_form = Eff::adhesion;
+  using lane_constants = Nan2022LanePair<T>;
+  KOKKOS_FORCEINLINE_FUNCTION lane_constants lane_pair(int k) const { return nan2022_lane_pair(pairs(k), derived(k)); }
+  bool lane_form_applies() const { return lanes_hold; }  // host
+  template <int N>
+  KOKKOS_FORCEINLINE_FUNCTION static NormalForce<T> normal_lane(const lane_constants& p, T delta, T R_eff,
+                                                                LaneHistory<T, N>& hist) {
+    static_assert(N == normal_history_size, "epac: Nan2022::normal_lane: one lane field per history field");
+    T unused[3] = {T(0), T(0), T(0)};  // without plasticity: no alpha_max and no kept line
+    T& alpha_max = Eff::plasticity ? hist.v[alpha_max_field] : unused[0];
+    T& line_k_e = Eff::plasticity ? hist.v[line_k_e_field] : unused[1];
+    T& line_alpha_p = Eff::plasticity ? hist.v[line_alpha_p_field] : unused[2];
+    const Nan2022LaneState<T> s = nan2022_normal_lane_state<T, Eff::plasticity>(p, delta, R_eff, alpha_max, line_k_e,
+                                                                                line_alpha_p, hist.v[state_field]);
+    hist.rare = s.rare;
+    NormalForce<T> r = contact_force(s.f, s.k_n, lane_select(s.yielded, p.beta_yielded, T(1)), p.damping_ratio,
+                                     p.kt_over_kn, p.kt_root, p.mu);
+    return r;
+  }
+
+  // An active contact's NormalForce from the law's force and stiffness; beta: 1 before the
+  // contact yields, beta_yielded after (Nan Sec. 2.3).
+  KOKKOS_FORCEINLINE_FUNCTION static NormalForce<T> contact_force(T f, T k_n, T beta, T damping_ratio, T kt_over_kn,
+                                                                  T kt_root, T mu) {
     NormalForce<T> r;
-    if (!s.active) return r;
     r.active = true;
-    r.f = s.f;
-    r.k_n = s.k_n;
+    r.f = f;
+    r.k_n = k_n;
     if (Eff::damping) {
-      const T beta = s.yielded ? p.beta_yielded : T(1);
-      r.damping = T(2) * p.damping_ratio * beta;  // Nan (24), (26)
-      r.damping_t = r.damping;                    // Nan (25)
+      r.damping = T(2) * damping_ratio * beta;  // Nan (24), (26)
+      r.damping_t = r.damping;                  // Nan (25)
     }
     if (Eff::friction) {
-      r.k_t = p.kt_over_kn * r.k_n;
-      r.kt_root_ratio = d.kt_root;
-      r.mu = p.mu;
+      r.k_t = kt_over_kn * r.k_n;
+      r.kt_root_ratio = kt_root;
+      r.mu = mu;
     }
     return r;
   }
@@ -118,6 +151,7 @@ struct Nan2022 {
     }
     Kokkos::deep_copy(m.pairs, h);
     Kokkos::deep_copy(m.derived, hd);
+    m.lanes_hold = nmat == 1 && table[0].E_star != 0.0 && nan2022_lane_form_holds(table[0]);
     return m;
   }
 

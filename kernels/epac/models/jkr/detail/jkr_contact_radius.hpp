@@ -9,6 +9,7 @@
 // (dd/dx = 0), d_c = -(3/4) 4^(-1/3): there the contact breaks with f = -5/9 f_ce. The
 // force-controlled pull-off, min f = -f_ce, is at x^(3/2) = 3/4.
 #include <epac/core/root_solve.hpp>
+#include <epac/core/simd_lanes.hpp>
 
 namespace epac {
 
@@ -111,6 +112,34 @@ KOKKOS_FORCEINLINE_FUNCTION T jkr_contact_radius_root(T d, T y_guess) {
     }
   }
   return math::sqrt(jkr_contact_radius_ratio(d));
+}
+
+// jkr_contact_radius_root's warm-started Newton iteration without branches, for contacts in lanes
+// (compute/pair_lanes.hpp): the same iterates, each lane's y frozen at the iterate the scalar
+// form returns. `converged` is false where the scalar form would take the closed form (no guess,
+// d outside (d_c, 1e6], a slope at or below 1/2, a converged iterate off the stable branch, no
+// convergence in 3 iterations); y is then meaningless and the caller takes the scalar form.
+// Divisions only by slopes > 1/2 (other lanes divide by 1).
+template <class T>
+KOKKOS_FORCEINLINE_FUNCTION T jkr_contact_radius_lane(T d, T y_guess, bool& converged) {
+  const T tol = T(2) * constants<T>::epsilon;
+  T y = y_guess;
+  bool live = (y_guess > T(0)) & (d > jkr_critical_overlap_ratio<T>()) & (d <= T(1e6));
+  bool done = false;
+  for (int it = 0; it < 3; ++it) {
+    const T y3 = y * y * y;
+    const T slope = T(4) * y3 - T(1);
+    live = live & (slope > T(0.5));
+    const T c = (y3 * y - y - d) / lane_select(live, slope, T(1));
+    const T next = y - c;
+    const bool small = T(6) * next * c * c <= tol * slope;
+    const bool stable = T(4) * next * next * next - T(1) > T(0.5);
+    y = lane_select(live, next, y);
+    done = done | (live & small & stable);
+    live = live & !small;  // a converged iterate ends the iteration, on or off the branch
+  }
+  converged = done;
+  return y;
 }
 
 // f/f_ce at y = sqrt(x), (B1): 16/9 y^6 - 8/3 y^3 (no square root).
