@@ -85,8 +85,8 @@ struct Nan2022 {
     T& line_alpha_p = Eff::plasticity ? hist.v[line_alpha_p_field] : unused[2];
     const Nan2022LaneState<T> s = nan2022_normal_lane_state<T, Eff::plasticity>(p, delta, R_eff, alpha_max, line_k_e,
                                                                                 line_alpha_p, hist.v[state_field]);
-    hist.rare = s.rare;
-    NormalForce<T> r = contact_force(s.f, s.k_n, lane_select(s.yielded, p.beta_yielded, T(1)), p.damping_ratio,
+    hist.rare = s.rare != T(0);
+    NormalForce<T> r = contact_force(s.f, s.k_n, lane_select(s.yielded != T(0), p.beta_yielded, T(1)), p.damping_ratio,
                                      p.kt_over_kn, p.kt_root, p.mu);
     return r;
   }

@@ -41,11 +41,13 @@ bool nan2022_lane_form_holds(const Nan2022PairConstants<T>& p) {  // host
   return p.kel_fixed == 0 && p.kp_fixed == 0;
 }
 
+// Flags as T (1 or 0), not bool: with two bools beside two floats g++ 12 keeps the struct in
+// memory and does not vectorise the lane loop ("complicated access pattern"; float only).
 template <class T>
 struct Nan2022LaneState {
   T f, k_n;
-  bool yielded;  // the damping's beta switch, as Nan2022NormalState::yielded
-  bool rare;     // not on the common path: nothing here holds, the caller takes the scalar law
+  T yielded;  // the damping's beta switch, as Nan2022NormalState::yielded
+  T rare;     // not on the common path: nothing here holds, the caller takes the scalar law
 };
 
 // alpha: overlap; R: R*; alpha_max, line_k_e, line_alpha_p: the contact's history (0 without
@@ -69,10 +71,10 @@ KOKKOS_FORCEINLINE_FUNCTION Nan2022LaneState<T> nan2022_normal_lane_state(const 
   const T alpha_p = lane_select(kept, line_alpha_p, p.alpha_0);
   const bool elastic = in_contact & !plastic & (kept | unyielded) & (alpha > alpha_p);
   Nan2022LaneState<T> s;
-  s.rare = !(plastic | elastic);
+  s.rare = lane_select(plastic | elastic, T(0), T(1));
   s.f = lane_select(plastic, f_y + k_p * (alpha - alpha_y), k_e * (alpha - alpha_p));  // Nan (18), (17)
   s.k_n = lane_select(plastic, k_p, k_e);
-  s.yielded = plastic | (alpha_max > T(0));
+  s.yielded = lane_select(plastic | (alpha_max > T(0)), T(1), T(0));
   alpha_max = lane_select(plastic, alpha, alpha_max);
   line_k_e = lane_select(plastic, T(0), k_e);  // loading forgets the line; unloading keeps it
   line_alpha_p = lane_select(plastic, T(0), alpha_p);
