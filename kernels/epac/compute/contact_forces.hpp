@@ -97,9 +97,13 @@ void compute_pair_forces(const Model& model, const Particles<T, Device>& p, cons
   constexpr bool ids_needed = detail::uses_side_order<Model>::value || Model::effects::friction;
   // Laws with a branch-free lane form run in blocks of contacts where the build vectorises them
   // (compute/pair_lanes.hpp, core/simd_lanes.hpp), in scenes of one material; the deterministic
-  // mode keeps the one-contact kernel (its buffer stores per contact).
+  // mode keeps the one-contact kernel (its buffer stores per contact). Laws with normal history
+  // (a common path in lanes, the rest scalar) take lanes only where a block holds several
+  // contacts: with one lane (GPUs) a rare contact would run both forms, so they keep the
+  // one-contact kernel there.
   constexpr int lanes = contact_lanes<typename Device::execution_space>::value;
-  if constexpr (detail::runs_in_lanes<Model>::value && lanes > 0) {
+  constexpr bool lanes_pay = lanes > 1 || (lanes == 1 && Model::normal_history_size == 0);
+  if constexpr (detail::runs_in_lanes<Model>::value && lanes_pay) {
     if (!buf.enabled() && model.nmat == 1 && detail::lane_form_applies(model)) {
       detail::pair_kernel_lanes<lanes>(model, p, c, h, dt, sums, out);
       return;
