@@ -67,17 +67,10 @@ void pair_kernel(const Model& model, const Particles<T, Device>& p, const Contac
           // is odd): the same bits as taking the separation in this order
           sep.d = -1.0 * sep.d;
         }
-        // i_is_first stays true (its default): canonical orientation, or a law that ignores it
-        double delta;  // the overlap before rounding to T: the arms below are double geometry too
-        ContactGeometry<T> g = detail::pair_geometry_from<T, Device, false>(p, i, j, nmat, sep, delta);
-        g.contact = k;
-        g.dt = dt;
-        const double half = 0.5 * delta;  // contact point: middle of the overlap zone
-        const Vec3<T> v_rel = load3(p.v, i) - load3(p.v, j);
         auto fa = fsum.access();
         auto ta = tsum.access();
-        detail::finish_contact<true>(model, conv, p, g, v_rel, T(double(g.R_i) - half), T(double(g.R_j) - half),
-                                     HistoryRow<T, Device>{hdata, k, 0}, out, buf, k, fa, ta, reversed);
+        detail::finish_pair_contact(model, conv, p, i, j, nmat, sep, dt, HistoryRow<T, Device>{hdata, k, 0}, out, buf,
+                                    k, fa, ta, reversed);
       });
 }
 }  // namespace detail

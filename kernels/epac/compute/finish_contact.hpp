@@ -3,6 +3,7 @@
 // compute/pair_lanes.hpp): the law, damping, friction, rolling resistance and accumulation of
 // one contact whose geometry is known, and the tail of a contact the law found inactive.
 #include <epac/compute/contact_outputs.hpp>
+#include <epac/compute/pair_wall_geometry.hpp>
 #include <epac/compute/particle_sums.hpp>
 #include <epac/core/vec3.hpp>
 #include <epac/models/contact_conventions.hpp>
@@ -138,6 +139,25 @@ KOKKOS_FORCEINLINE_FUNCTION void finish_contact(const Model& model, const Conv& 
   }
   if (out.normal_force.extent(0) > 0) out.normal_force(k) = fn;
   if (out.overlap.extent(0) > 0) out.overlap(k) = g.delta;
+}
+
+// One pair contact (i, j in the order it is evaluated) from its separation: the geometry, then
+// finish_contact. The pair kernel's body, and the lanes kernel's for its rare lanes.
+template <class Model, class T, class Device, class Conv, class FAccess, class TAccess>
+KOKKOS_FORCEINLINE_FUNCTION void finish_pair_contact(
+    const Model& model, const Conv& conv, const Particles<T, Device>& p, int i, int j, int nmat,
+    const PairSeparation<typename Particles<T, Device>::position_type>& sep, T dt, const HistoryRow<T, Device>& row,
+    const ContactOutputs<T, Device>& out, const ContactForceBuffer<T, Device>& buf, int k, const FAccess& fa,
+    const TAccess& ta, bool reversed = false) {
+  // i_is_first stays true (its default): canonical orientation, or a law that ignores it
+  double delta;  // the overlap before rounding to T: the arms below are double geometry too
+  ContactGeometry<T> g = pair_geometry_from<T, Device, false>(p, i, j, nmat, sep, delta);
+  g.contact = k;
+  g.dt = dt;
+  const double half = 0.5 * delta;  // contact point: middle of the overlap zone
+  const Vec3<T> v_rel = load3(p.v, i) - load3(p.v, j);
+  finish_contact<true>(model, conv, p, g, v_rel, T(double(g.R_i) - half), T(double(g.R_j) - half), row, out, buf, k, fa,
+                       ta, reversed);
 }
 
 }  // namespace detail

@@ -269,13 +269,8 @@ void pair_kernel_lanes(const Model& model, const Particles<T, Device>& p, const 
           for (int l = 0; l < lanes; ++l) {
             if (L_rare[l] == T(0)) continue;
             const int k = k0 + l, i = L_i[l], j = L_j[l];
-            double delta;
-            ContactGeometry<T> g = pair_geometry_from<T, Device, false>(p, i, j, 1, pair_separation(p, i, j), delta);
-            g.contact = k;
-            g.dt = dt;
-            const double half = 0.5 * delta;
-            finish_contact<true>(model, conv, p, g, Vec3<T>(L_vx[l], L_vy[l], L_vz[l]), T(double(g.R_i) - half),
-                                 T(double(g.R_j) - half), HistoryRow<T, Device>{hdata, k, 0}, out, nobuf, k, fa, ta);
+            finish_pair_contact(model, conv, p, i, j, 1, pair_separation(p, i, j), dt,
+                                HistoryRow<T, Device>{hdata, k, 0}, out, nobuf, k, fa, ta);
           }
         // 4. Coulomb sliding, Nan (23)
         if (friction)
