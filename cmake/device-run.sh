@@ -3,7 +3,9 @@
 #  1. the GPU's compute capability (nvidia-smi) -> the nearest Kokkos 3.4 arch (Hopper and newer:
 #     AMPERE80, whose PTX the driver compiles for the GPU at the first launch);
 #  2. Kokkos with CUDA for that arch (cmake/bootstrap-kokkos-cuda.sh, cached);
-#  3. epac built with it: the test executables, epac-law-throughput, epac-bench-contacts, epac-run;
+#  3. epac built with it: the test executables, epac-law-throughput, epac-bench-contacts, epac-run
+#     (steps 2-3 are skipped when the bundle holds them prebuilt for this checkout:
+#     cmake/device-prebuild.sh);
 #  4. the library test suite on the GPU (one ctest per test executable);
 #  5. contacts/s per law, double and float, 1e5 to 1e7 contacts (epac-law-throughput), the
 #     Hertz-Mindlin kernel variants (epac-bench-contacts: default sums, atomics, deterministic);
@@ -23,7 +25,8 @@
 # overrides the query), EPAC_JOBS (default nproc), EPAC_DEVICE_CONTACTS (default 1e5,1e6,1e7),
 # EPAC_DEVICE_TARGETS (what step 3 builds; default: every test, the two benchmarks, epac-run),
 # EPAC_DEVICE_FLAGS (compile flags, e.g. -gencode=arch=compute_90,code=sm_90 for
-# native Hopper code instead of PTX), EPAC_CMAKE_ARGS (extra configure arguments).
+# native Hopper code instead of PTX), EPAC_CMAKE_ARGS (extra configure arguments),
+# EPAC_DEVICE_PREBUILT=0 (build even where the bundle holds prebuilt executables).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${EPAC_DEVICE_BUILD_DIR:-$root/build-device}"
@@ -99,32 +102,56 @@ if [ -f "$bundle/manifest.txt" ]; then
   export LD_LIBRARY_PATH="$sysroot/usr/lib/x86_64-linux-gnu${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
   step_done bundle "ok: $(head -n1 "$bundle/manifest.txt")" $(( $(date +%s) - t ))
 fi
-prefix="$(EPAC_JOBS="$jobs" bash "$root/cmake/bootstrap-kokkos-cuda.sh" "$arch")" || {
-  rc=$?; [ "$rc" -eq 3 ] && echo "error: no CUDA toolkit (nvcc): set CUDA_HOME or install one" >&2; exit 1; }
-step_done kokkos "ok: $prefix ($(cat "$prefix/.epac-kokkos-ok"))" $(( $(date +%s) - t ))
-
-# 3. build what runs
-t=$(date +%s)
-flags="${EPAC_DEVICE_FLAGS:-}"
-# shellcheck disable=SC2086
-cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DKokkos_ROOT="$prefix" \
-  -DCMAKE_CXX_COMPILER="$prefix/bin/nvcc_wrapper" -DCMAKE_CXX_FLAGS="$flags" \
-  -DEPAC_BUILD_TESTS=ON -DEPAC_BUILD_BENCH=ON -DEPAC_BUILD_DRIVERS=ON "${dep_args[@]}" ${EPAC_CMAKE_ARGS:-} \
-  > "$report/configure.log" 2>&1 || { tail -n 50 "$report/configure.log"; exit 1; }
-tests="$(cmake --build "$build" --target help | sed -n 's/^\.\.\. \(test_[A-Za-z0-9_]*\).*/\1/p' | sort | tr '\n' ' ')"
-[ -n "$tests" ] || { echo "error: no test targets in $build (configure log: $report/configure.log)" >&2; exit 1; }
-targets="${EPAC_DEVICE_TARGETS:-$tests epac-law-throughput epac-bench-contacts epac-run}"
-step "building (-j $jobs): $targets"
-# shellcheck disable=SC2086
-if ! cmake --build "$build" -j "$jobs" --target $targets \
-     > "$report/build.log" 2>&1; then
-  grep -E -A5 'error' "$report/build.log" | head -n 100
-  step_done build failed $(( $(date +%s) - t ))
-  echo "error: build failed (log: $report/build.log)" >&2
-  exit 1
+# 2-3 from a prebuilt bundle (cmake/device-prebuild.sh): the executables built elsewhere for this
+# very checkout, so that a GPU slot is spent running, not compiling. Used only when the checkout and
+# build folder have the paths they were built at, the arch is the one chosen above and every file
+# they were built from is unchanged; else built here, and the report says why.
+use_prebuilt=0
+pb() { sed -n "s/^$1=//p" "$bundle/prebuilt.txt"; }
+if [ -n "$gpu_cc" ] && [ "${EPAC_DEVICE_PREBUILT:-1}" != 0 ] && [ -f "$bundle/prebuilt.txt" ]; then
+  if why="$(bash "$root/cmake/device-prebuilt-check.sh" fits "$bundle" "$root" "$build" "$arch")"; then use_prebuilt=1
+  else step "prebuilt bundle not used ($why): building"; step_done prebuilt "not used: $why" 0; fi
 fi
-step_done build ok $(( $(date +%s) - t ))
-step "built in $(( $(date +%s) - t )) s"
+if [ "$use_prebuilt" = 1 ]; then
+  t=$(date +%s)
+  tar -C / -xJf "$bundle/prebuilt.tar.xz"
+  export LD_LIBRARY_PATH="$build/prebuilt-lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
+  step "prebuilt: $(pb executables) executables of commit $(pb commit), made $(pb made)"
+  step_done build "ok: prebuilt (commit $(pb commit), CUDA $(pb nvcc), $(pb host_compiler))" $(( $(date +%s) - t ))
+else
+  prefix="$(EPAC_JOBS="$jobs" bash "$root/cmake/bootstrap-kokkos-cuda.sh" "$arch")" || {
+    rc=$?; [ "$rc" -eq 3 ] && echo "error: no CUDA toolkit (nvcc): set CUDA_HOME or install one" >&2; exit 1; }
+  step_done kokkos "ok: $prefix ($(cat "$prefix/.epac-kokkos-ok"))" $(( $(date +%s) - t ))
+
+  # 3. build what runs
+  t=$(date +%s)
+  flags="${EPAC_DEVICE_FLAGS:-}"
+  # Ninja where there is one: with Makefiles, `cmake --build --target A B C` builds the targets one
+  # after the other (the top Makefile is .NOTPARALLEL), and the first GPU session spent 12 minutes of
+  # a 16-core machine compiling three test executables at a time. A build folder keeps its generator.
+  gen=()
+  if [ ! -f "$build/CMakeCache.txt" ] && command -v ninja > /dev/null 2>&1; then gen=(-G Ninja); fi
+  # shellcheck disable=SC2086
+  cmake -S "$root" -B "$build" "${gen[@]}" -DCMAKE_BUILD_TYPE=Release -DKokkos_ROOT="$prefix" \
+    -DCMAKE_CXX_COMPILER="$prefix/bin/nvcc_wrapper" -DCMAKE_CXX_FLAGS="$flags" \
+    -DEPAC_BUILD_TESTS=ON -DEPAC_BUILD_BENCH=ON -DEPAC_BUILD_DRIVERS=ON "${dep_args[@]}" ${EPAC_CMAKE_ARGS:-} \
+    > "$report/configure.log" 2>&1 || { tail -n 50 "$report/configure.log"; exit 1; }
+  tests="$(cmake --build "$build" --target help | sed -n -E 's/^(\.\.\. )?(test_[A-Za-z0-9_]+)(: .*| .*)?$/\2/p' | sort -u | tr '\n' ' ')"
+  [ -n "$tests" ] || { echo "error: no test targets in $build (configure log: $report/configure.log)" >&2; exit 1; }
+  targets="${EPAC_DEVICE_TARGETS:-$tests epac-law-throughput epac-bench-contacts epac-run}"
+  step "building (-j $jobs): $targets"
+  # shellcheck disable=SC2086
+  if ! cmake --build "$build" -j "$jobs" --target $targets \
+       > "$report/build.log" 2>&1; then
+    grep -E -A5 'error' "$report/build.log" | head -n 100
+    step_done build failed $(( $(date +%s) - t ))
+    echo "error: build failed (log: $report/build.log)" >&2
+    exit 1
+  fi
+  step_done build ok $(( $(date +%s) - t ))
+  step "built in $(( $(date +%s) - t )) s"
+
+fi
 
 if [ -z "$gpu_cc" ]; then
   echo "error: $no_gpu_msg" >&2
@@ -140,7 +167,9 @@ failed=0
 # 4. the test suite
 t=$(date +%s)
 step "test suite on the GPU"
-if (cd "$build" && ctest -R '^test_' -j 4 --timeout 600 --output-on-failure) > "$report/tests.log" 2>&1; then
+# One ctest per core: at its first launch each executable has the driver compile its kernels' PTX
+# (sm_80 PTX on a newer GPU), CPU work that one GPU shares well between processes.
+if (cd "$build" && ctest -R '^test_' -j "$jobs" --timeout 600 --output-on-failure) > "$report/tests.log" 2>&1; then
   step_done tests ok $(( $(date +%s) - t ))
 else
   step_done tests failed $(( $(date +%s) - t )); failed=1

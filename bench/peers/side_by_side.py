@@ -25,6 +25,8 @@ Usage:
 LAMMPS is built on first use (about 2-5 min; cached in ~/.cache/lammps-peer) with the build scripts
 of the LAMMPS peer kit supplied to developers beside the checkout (PEERS below; the kit's inputs
 are copied in bench/peers/lammps/, see its README.md); epac-run is taken from $EPAC_BUILD_DIR (default build/) and built if missing.
+Where that epac-run was built with -march=native, the LAMMPS it is compared with is built with
+-march=native -fno-math-errno too, in ~/.cache/lammps-peer/build-native (--lmp overrides both).
 """
 import argparse
 import csv
@@ -42,6 +44,10 @@ import settling_scene  # noqa: E402
 
 PEERS = os.path.normpath(os.path.join(ROOT, "..", "shared", "peers", "lammps"))
 LMP_DEFAULT = os.path.expanduser("~/.cache/lammps-peer/build/lmp")
+# An epac built for this machine's CPU (-march=native) is compared with a LAMMPS built the same way,
+# in its own build folder (issue 20: both codes with the flags a user of this machine would use).
+LMP_NATIVE = os.path.expanduser("~/.cache/lammps-peer/build-native/lmp")
+NATIVE_FLAGS = "-march=native -fno-math-errno"
 
 def law_block(model, extra_material="", extra_model=""):
     """The scene's material (E 1e9 Pa, nu 0.3, density 1000, restitution 0.5, friction 0.5, as
@@ -95,13 +101,27 @@ LAWS = {
 }
 
 
-def ensure_lammps(lmp):
+def ensure_lammps(lmp, cxx_flags=None):
+    """lmp, built first if missing: the peer kit's build, with cxx_flags (CMake's CXXFLAGS) if given."""
     if os.path.exists(lmp):
         return lmp
-    print(f"[side_by_side] building LAMMPS into {os.path.dirname(lmp)} (first use only)", flush=True)
+    build = os.path.dirname(lmp)
+    print(f"[side_by_side] building LAMMPS into {build}{' with ' + cxx_flags if cxx_flags else ''} (first use only)",
+          flush=True)
     tarball = subprocess.check_output(["bash", os.path.join(PEERS, "fetch-lammps-source.sh")], text=True).split()[-1]
-    subprocess.check_call(["bash", os.path.join(PEERS, "build-lammps.sh"), tarball], stdout=subprocess.DEVNULL)
+    env = dict(os.environ)
+    cmd = ["bash", os.path.join(PEERS, "build-lammps.sh"), tarball]
+    if cxx_flags:
+        env["CXXFLAGS"] = cxx_flags  # a fresh build folder takes CMAKE_CXX_FLAGS from it
+        cmd += [os.path.expanduser("~/.cache/lammps-peer/src"), build]
+    subprocess.check_call(cmd, stdout=subprocess.DEVNULL, env=env)
     return lmp
+
+
+def march_of(flags):
+    """The -march value in a flags line, or None."""
+    m = re.search(r"-march=(\S+)", flags)
+    return m.group(1) if m else None
 
 
 def ensure_epac_run():
@@ -274,7 +294,9 @@ def main():
                     help="settling: spheres per grid row in x and y, and layers (default 44 24: 46,464 spheres, "
                          "about 1e5 contacts in the timed half)")
     ap.add_argument("--json", default=None, help="write the measurements here")
-    ap.add_argument("--lmp", default=os.environ.get("LMP", LMP_DEFAULT))
+    ap.add_argument("--lmp", default=os.environ.get("LMP"),
+                    help=f"the LAMMPS executable (default: {LMP_DEFAULT}, or {LMP_NATIVE} built with "
+                         f"'{NATIVE_FLAGS}' when epac-run was built with -march=native; built on first use)")
     ap.add_argument("--legacy-epac-run", default=None,
                     help="an older epac-run without periodic boxes (a 'before' build): also timed, on the "
                          "wall-wrapped scene (legacy_walls_scene.py)")
@@ -283,8 +305,13 @@ def main():
                          "on the same scene and precisions, alternating with the current one (before/after a change)")
     args = ap.parse_args()
 
-    lmp = ensure_lammps(args.lmp)
     exe = ensure_epac_run()
+    if args.lmp:
+        lmp = ensure_lammps(args.lmp)
+    elif march_of(epac_build_flags(exe)) == "native":
+        lmp = ensure_lammps(LMP_NATIVE, NATIVE_FLAGS)
+    else:
+        lmp = ensure_lammps(LMP_DEFAULT)
     order = "shuffled" if args.scene == "mixed" else None
     settling = args.scene == "settling"
     if (args.scene == "mixed" and args.before_epac_run) or (args.scene != "fcc" and args.legacy_epac_run):
@@ -364,6 +391,11 @@ def main():
     print()
     for k, v in flags.items():
         print(f"{k} built with: {v}")
+    if march_of(flags["epac"]) != march_of(flags["lammps"]):
+        def arch(code):
+            return f"-march={march_of(flags[code])}" if march_of(flags[code]) else "no -march"
+        print(f"warning: the two codes were built for different CPUs (epac {arch('epac')}, LAMMPS {arch('lammps')}): "
+              "the speedups mix the codes with their flags")
     print()
     print(f"Hold phase, whole step loop, ns per active contact-step (best of {args.repeats}); "
           "speedup = LAMMPS time / epac time (> 1: epac faster)")
