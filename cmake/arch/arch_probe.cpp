@@ -1,7 +1,7 @@
 // EPAC_ARCH=auto (cmake/EpacArchFlags.cmake) compiles this with the candidate -march and runs it:
 // it exits 0 only where this CPU, and the OS's saved register state, support every x86 extension
-// those flags let the compiler use (a VM may report AVX-512 and not enable it). A vectorisable
-// loop runs too, so a missing instruction also shows as a crash, not only as a missing flag.
+// those flags let the compiler use (the list of cpu_guard.cpp; a VM may report AVX-512 and not
+// enable it). A vectorisable loop runs too, so a missing instruction also shows as a crash.
 #include <cstdio>
 
 #if defined(__x86_64__) || defined(__i386__)
@@ -19,6 +19,9 @@ int main(int argc, char**) {
 #ifdef __SSE4_2__
   EPAC_REQUIRE("sse4.2")
 #endif
+#ifdef __POPCNT__
+  EPAC_REQUIRE("popcnt")
+#endif
 #ifdef __AVX__
   EPAC_REQUIRE("avx")
 #endif
@@ -27,6 +30,9 @@ int main(int argc, char**) {
 #endif
 #ifdef __FMA__
   EPAC_REQUIRE("fma")
+#endif
+#ifdef __BMI__
+  EPAC_REQUIRE("bmi")
 #endif
 #ifdef __BMI2__
   EPAC_REQUIRE("bmi2")

@@ -12,13 +12,16 @@ namespace {
 // 101: the first priority open to programs, so before any static initialiser of epac's own code
 __attribute__((constructor(101), target("arch=x86-64"))) void epac_cpu_guard() {
   __builtin_cpu_init();
-  const char* missing[8];
+  const char* missing[11];
   int n = 0;
   // __builtin_cpu_supports takes a literal: one line per extension the compiler may have used
 #define EPAC_GUARD_NEED(feature) \
   if (!__builtin_cpu_supports(feature)) missing[n++] = feature;
 #ifdef __SSE4_2__
   EPAC_GUARD_NEED("sse4.2")
+#endif
+#ifdef __POPCNT__
+  EPAC_GUARD_NEED("popcnt")
 #endif
 #ifdef __AVX__
   EPAC_GUARD_NEED("avx")
@@ -28,6 +31,12 @@ __attribute__((constructor(101), target("arch=x86-64"))) void epac_cpu_guard() {
 #endif
 #ifdef __FMA__
   EPAC_GUARD_NEED("fma")
+#endif
+#ifdef __BMI__
+  EPAC_GUARD_NEED("bmi")
+#endif
+#ifdef __BMI2__
+  EPAC_GUARD_NEED("bmi2")
 #endif
 #ifdef __AVX512F__
   EPAC_GUARD_NEED("avx512f")
