@@ -43,7 +43,8 @@ function(epac_resolve_auto_arch out_arch out_why)
   set(_exe ${_dir}/epac-arch-probe${CMAKE_EXECUTABLE_SUFFIX})
   file(REMOVE ${_exe})
   unset(EPAC_ARCH_PROBE_COMPILE CACHE)
-  try_compile(EPAC_ARCH_PROBE_COMPILE ${_dir} ${CMAKE_CURRENT_LIST_DIR}/arch/arch_probe.cpp
+  try_compile(EPAC_ARCH_PROBE_COMPILE ${_dir}
+              SOURCES ${CMAKE_CURRENT_LIST_DIR}/arch/arch_probe.cpp ${CMAKE_CURRENT_LIST_DIR}/arch/cpu_guard.cpp
               COMPILE_DEFINITIONS -march=${_m} COPY_FILE ${_exe})
   if(NOT EPAC_ARCH_PROBE_COMPILE)
     set(${out_arch} portable PARENT_SCOPE)
@@ -53,7 +54,10 @@ function(epac_resolve_auto_arch out_arch out_why)
   execute_process(COMMAND ${EPAC_ARCH_PROBE_LAUNCHER} ${_exe} RESULT_VARIABLE _rc OUTPUT_VARIABLE _out
                   ERROR_VARIABLE _err TIMEOUT 60)
   if(_out STREQUAL "")
-    set(_out "${_err}")  # a crash says why on stderr; the probe itself on stdout
+    set(_out "${_err}")  # the guard and a crash say why on stderr
+  endif()
+  if(_out MATCHES "lacks:([^\n]*)")
+    set(_out "missing${CMAKE_MATCH_1}")  # the guard's list, without its advice
   endif()
   string(STRIP "${_out}" _out)
   string(REPLACE "\n" "; " _out "${_out}")
