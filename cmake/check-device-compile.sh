@@ -53,9 +53,27 @@ echo "Kokkos with CUDA at $prefix ($(sed -n 's/.*cuda=\([0-9.]*\).*arch=\(.*\)/C
 flags="${EPAC_DEVICE_FLAGS:--Xcudafe --promote_warnings -Werror}"
 lammps=()
 if [ -n "${EPAC_DEVICE_LAMMPS_SOURCE_DIR:-}" ]; then lammps=(-DEPAC_LAMMPS_SOURCE_DIR="$EPAC_DEVICE_LAMMPS_SOURCE_DIR"); fi
+# What this check exists for is decided before code generation for the host: nvcc's front end
+# (cudafe: cross-execution-space calls, lambdas), its device compiler (cicc, always optimising) and
+# ptxas, and the link. So the host side is compiled at -O0 (half of each file's time at -O3), and
+# each target's sources in unity batches (CMake's UNITY_BUILD: the Kokkos headers parsed, and
+# shared kernels instantiated, once per batch, not once per file; the sources keep no file-local
+# names that would collide). Measured on a 2-core machine: see docs/gpu.md. The host compiler's
+# flow warnings (-Wmaybe-uninitialized needs -O1) are the host build's, which compiles every file
+# on its own at -O3. EPAC_CMAKE_ARGS="-DCMAKE_UNITY_BUILD=OFF -DCMAKE_CXX_FLAGS_RELEASE=-O3"
+# restores the file-by-file, optimised check.
+# Ninja where it can be had (Debian's ninja-build): it compiles a target's files while the
+# libraries it links are still being built, where Makefiles wait target by target, so both cores
+# stay busy to the end. A build folder keeps the generator it was made with.
+gen=()
+if [ ! -f "$build/CMakeCache.txt" ]; then
+  command -v ninja > /dev/null 2>&1 || bash "$root/cmake/install-deps.sh" ninja-build > /dev/null 2>&1 || true
+  if command -v ninja > /dev/null 2>&1; then gen=(-G Ninja); fi
+fi
 # shellcheck disable=SC2086
-cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DKokkos_ROOT="$prefix" -DCMAKE_CXX_COMPILER="$compiler" \
-  -DCMAKE_CXX_FLAGS="$flags" -DEPAC_BUILD_TESTS=ON -DEPAC_BUILD_BENCH=ON -DEPAC_BUILD_DRIVERS=ON \
+cmake -S "$root" -B "$build" "${gen[@]}" -DCMAKE_BUILD_TYPE=Release -DKokkos_ROOT="$prefix" -DCMAKE_CXX_COMPILER="$compiler" \
+  -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_CXX_FLAGS_RELEASE="-O0 -DNDEBUG" -DCMAKE_UNITY_BUILD=ON \
+  -DEPAC_BUILD_TESTS=ON -DEPAC_BUILD_BENCH=ON -DEPAC_BUILD_DRIVERS=ON \
   "${lammps[@]}" ${EPAC_CMAKE_ARGS:-} > "$build/epac-configure.log" 2>&1 \
   || { cat "$build/epac-configure.log"; echo "error: configure failed"; exit 1; }
 targets="${EPAC_DEVICE_TARGETS:-all epac-mdr-steady}"

@@ -68,32 +68,71 @@ struct CellList {
   KOKKOS_INLINE_FUNCTION static int axis_wrap(int c, int n_d) { return c < 0 ? c + n_d : (c >= n_d ? c - n_d : c); }
 
   // Calls g(c) for every cell c around position x (its own and the up to 26 neighbours, across
-  // the faces of periodic axes), each distinct cell once, z slowest and x fastest.
+  // the faces of periodic axes) that holds points closer to x than `reach`, each distinct cell
+  // once, z slowest and x fastest. A neighbour is skipped when x's distance to it (to the near
+  // face, edge or corner: from x's offset in its own cell) is at least reach; with a cell edge of
+  // reach that is about a quarter of the 26 (edge and corner cells beyond a sphere of radius
+  // reach). The cells visited keep their order, so the pairs found keep theirs. reach <= 0, NaN
+  // or inf: no cell is skipped. Along a periodic axis of fewer than 3 cells the neighbour is on both
+  // sides, so it is never skipped.
   template <class G>
-  KOKKOS_INLINE_FUNCTION void for_each_near_cell(const Vec3<P>& x, G&& g) const {
+  KOKKOS_INLINE_FUNCTION void for_each_near_cell(const Vec3<P>& x, P reach, G&& g) const {
     const int cx = axis_cell(x.x, lo.x, h.x, nx, px), cy = axis_cell(x.y, lo.y, h.y, ny, py),
               cz = axis_cell(x.z, lo.z, h.z, nz, pz);
     int x0, x1, y0, y1, z0, z1;
     axis_range(cx, nx, px, x0, x1);
     axis_range(cy, ny, py, y0, y1);
     axis_range(cz, nz, pz, z0, z1);
+    // Squared distances from x to the neighbour slabs below and above along each axis. The
+    // margin (relative 1e-6 on reach^2) keeps round-off in the offsets from skipping a cell
+    // that holds a partner; a skip is only ever of a cell that could hold none.
+    const bool skip_none = !(reach > P(0)) || !(reach - reach == P(0));  // <= 0, NaN or inf
+    const P reach2 = skip_none ? P(0) : reach * reach * P(1.000001);
+    P bx[2], by[2], bz[2];
+    axis_gaps(x.x, lo.x, h.x, nx, px, cx, bx);
+    axis_gaps(x.y, lo.y, h.y, ny, py, cy, by);
+    axis_gaps(x.z, lo.z, h.z, nz, pz, cz, bz);
     for (int oz = z0; oz <= z1; ++oz) {
       const int z = axis_wrap(cz + oz, nz);
+      const P dz2 = oz == 0 ? P(0) : bz[oz > 0];
+      if (!skip_none && !(dz2 < reach2)) continue;
       for (int oy = y0; oy <= y1; ++oy) {
         const int y = axis_wrap(cy + oy, ny);
-        for (int ox = x0; ox <= x1; ++ox) g((z * ny + y) * nx + axis_wrap(cx + ox, nx));
+        const P dyz2 = dz2 + (oy == 0 ? P(0) : by[oy > 0]);
+        if (!skip_none && !(dyz2 < reach2)) continue;
+        for (int ox = x0; ox <= x1; ++ox) {
+          if (!skip_none && !(dyz2 + (ox == 0 ? P(0) : bx[ox > 0]) < reach2)) continue;
+          g((z * ny + y) * nx + axis_wrap(cx + ox, nx));
+        }
       }
     }
   }
 
-  // Calls f(j) for every particle j > i in the cells around position x, cell by cell in
-  // for_each_near_cell's order and ascending within a cell. A cell's slice is in ascending index,
-  // so a cell whose last index is <= i is skipped whole and the others from their first index
-  // > i. After a spatial sort indices follow the cells, so about half the cells around i hold
-  // only lower indices (the pair search visits each pair from its lower end).
+  // Squared distances from coordinate x (in cell c of the axis) to the slab of cell c - 1
+  // (gap[0]) and of cell c + 1 (gap[1]). The offset in the cell is taken after the periodic
+  // fold, as axis_cell bins; a coordinate outside a non-periodic grid (clamped into an edge
+  // cell) gets its true distance to the inner neighbour and 0 on the outer side. Periodic axes
+  // with fewer than 3 cells: 0 (the neighbour lies on both sides).
+  KOKKOS_INLINE_FUNCTION static void axis_gaps(P x, P lo_d, P h_d, int n_d, bool periodic, int c, P gap[2]) {
+    P f = (x - lo_d) / h_d;  // h_d > 0 (checked on the host)
+    if (periodic) {
+      const P nf = P(n_d);
+      f = f - nf * math::floor(f / nf);
+    }
+    const P below = (f - P(c)) * h_d, above = (P(c + 1) - f) * h_d;
+    const bool both_sides = periodic && n_d < 3;
+    gap[0] = both_sides || below < P(0) ? P(0) : below * below;
+    gap[1] = both_sides || above < P(0) ? P(0) : above * above;
+  }
+
+  // Calls f(j) for every particle j > i in the cells around position x that reach `reach`
+  // (for_each_near_cell), cell by cell in its order and ascending within a cell. A cell's slice
+  // is in ascending index, so a cell whose last index is <= i is skipped whole and the others
+  // from their first index > i. After a spatial sort indices follow the cells, so about half the
+  // cells around i hold only lower indices (the pair search visits each pair from its lower end).
   template <class F>
-  KOKKOS_INLINE_FUNCTION void for_each_near_above(const Vec3<P>& x, int i, F&& f) const {
-    for_each_near_cell(x, [&](int c) {
+  KOKKOS_INLINE_FUNCTION void for_each_near_above(const Vec3<P>& x, int i, P reach, F&& f) const {
+    for_each_near_cell(x, reach, [&](int c) {
       const int end = start(c + 1);
       if (end == start(c) || sorted(end - 1) <= i) return;
       int s = start(c);

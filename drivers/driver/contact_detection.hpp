@@ -55,6 +55,14 @@ ContactList<Device> find_pairs(const Particles<T, Device>& p, const CellList<T, 
   auto r = p.radius;
   const PeriodicBox<P> box = p.box;  // distances by minimum image on its periodic axes
   const bool periodic = box.periodic();
+  // every partner of i lies within ri + rmax + skin: cells farther away are not searched
+  T rmax = T(0);
+  Kokkos::parallel_reduce(
+      "epac::driver::max_radius", Kokkos::RangePolicy<exec>(0, n),
+      KOKKOS_LAMBDA(int q, T& m) {
+        if (r(q) > m) m = r(q);
+      },
+      Kokkos::Max<T>(rmax));
   Kokkos::View<int*, Device> offset("epac::driver::pair_offset", n + 1);
   constexpr int K = kPairScratch;
   Kokkos::View<int*, Device> scratch(Kokkos::view_alloc(Kokkos::WithoutInitializing, "epac::driver::pair_scratch"),
@@ -64,7 +72,7 @@ ContactList<Device> find_pairs(const Particles<T, Device>& p, const CellList<T, 
         const Vec3<P> xi = load3(x, i);
         const T ri = r(i);
         int c = 0;
-        cells.for_each_near_above(xi, i, [&](int j) {
+        cells.for_each_near_above(xi, i, P(ri) + P(rmax) + P(skin), [&](int j) {
           Vec3<P> d = xi - load3(x, j);
           if (periodic) d = box.minimum_image(d);
           const P cut = P(ri) + P(r(j)) + P(skin);
@@ -103,7 +111,7 @@ ContactList<Device> find_pairs(const Particles<T, Device>& p, const CellList<T, 
         }
         const Vec3<P> xi = load3(x, i);
         const T ri = r(i);
-        cells.for_each_near_above(xi, i, [&](int j) {
+        cells.for_each_near_above(xi, i, P(ri) + P(rmax) + P(skin), [&](int j) {
           Vec3<P> d = xi - load3(x, j);
           if (periodic) d = box.minimum_image(d);
           const P cut = P(ri) + P(r(j)) + P(skin);

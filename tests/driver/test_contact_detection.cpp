@@ -6,6 +6,7 @@
 #include "driver/contact_detection.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 #include <set>
 #include <utility>
@@ -271,4 +272,58 @@ TEMPLATE_LIST_TEST_CASE("a rebuild and remap keeps the history of persisting con
   };
   check(det.pairs, det.pair_history, old_pairs, false);
   check(det.walls, det.wall_history, old_walls, true);
+}
+
+namespace {
+// Cells for_each_near_cell visits around x with this reach (counted on the device).
+template <class D>
+int cells_visited(const CellList<double, D>& cells, const Vec3<double>& x, double reach) {
+  int visited = 0;
+  Kokkos::parallel_reduce(
+      Kokkos::RangePolicy<typename D::execution_space>(0, 1),
+      KOKKOS_LAMBDA(int, int& v) { cells.for_each_near_cell(x, reach, [&](int) { ++v; }); }, visited);
+  return visited;
+}
+}  // namespace
+
+TEMPLATE_LIST_TEST_CASE(
+    "cells beyond a particle's reach are not searched; a pair just inside the cut-off across a "
+    "cell corner is found",
+    "[driver][detection]", test::Backends) {
+  using D = TestType;
+  const double r = 1e-3, skin = 1e-4, h = 2 * r + skin;  // cell edge = the largest cut-off
+  // Particle 0 in cell (1, 1, 1) of a 4^3 grid (anchors 2 and 3 span it; 64 cells: within the
+  // cap of 2 n + 64), placed so that the nearest corner of the diagonal cell (2, 2, 2) is
+  // (1 - 2e-9) of the reach r + r + skin = h away; particle 1 on that diagonal at (1 - 1e-9) h,
+  // just past the corner: a partner in a cell the search only just must not skip.
+  const double c0 = 1 * h + h * (1 - (1 - 2e-9) / std::sqrt(3.0)), c1 = c0 + h * (1 - 1e-9) / std::sqrt(3.0);
+  // Particles 4 and 5 (radius r / 4: reach r / 4 + r + skin < h, cut-off r / 2 + skin): 4 at 0.1 h
+  // below the upper faces of cell (1, 1, 2), 5 in the diagonal cell (2, 2, 3) just inside the
+  // cut-off. Here the lower and upper gaps differ (0.9 h and 0.1 h): taking one for the other
+  // would skip 5's cell.
+  const double rs = r / 4, cs = (2 * rs + skin) * (1 - 1e-9) / std::sqrt(3.0);
+  HostPacking hp;
+  hp.x = {c0, c1, 0.0, 3.5 * h, 1.9 * h, 1.9 * h + cs};
+  hp.y = hp.x;
+  hp.z = {c0, c1, 0.0, 3.5 * h, 2.9 * h, 2.9 * h + cs};
+  hp.r = {r, r, r, r, rs, rs};
+  const auto p = to_device<D>(hp);
+  const CellList<double, D> cells = build_cell_list(p, h);
+  REQUIRE(cells.nx == 4);
+  REQUIRE(cells.h.x == Approx(h).epsilon(1e-12));
+  REQUIRE(cells.cell_of(Vec3<double>(c1, c1, c1)) == (2 * 4 + 2) * 4 + 2);
+  REQUIRE(cells.cell_of(Vec3<double>(hp.x[5], hp.y[5], hp.z[5])) == (3 * 4 + 2) * 4 + 2);
+  // 0.95 h from the lower faces of its cell: the 7 cells below on two or three axes are beyond h
+  const Vec3<double> x_high(1.95 * h, 1.95 * h, 1.95 * h);
+  CHECK(cells_visited(cells, x_high, h) == 20);
+  // the cell's centre: every corner cell is within sqrt(3)/2 h
+  CHECK(cells_visited(cells, Vec3<double>(1.5 * h, 1.5 * h, 1.5 * h), h) == 27);
+  // no reach (<= 0, NaN, inf): every neighbour
+  CHECK(cells_visited(cells, x_high, 0.0) == 27);
+  CHECK(cells_visited(cells, x_high, std::nan("")) == 27);
+  CHECK(cells_visited(cells, x_high, HUGE_VAL) == 27);
+  const auto expected = brute_force_pairs(hp, skin);
+  REQUIRE(expected == std::set<std::pair<int, int>>{{0, 1}, {4, 5}});
+  const auto got = list_pairs(find_pairs(p, cells, skin));
+  CHECK(std::set<std::pair<int, int>>(got.begin(), got.end()) == expected);
 }

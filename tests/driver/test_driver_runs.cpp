@@ -1,6 +1,7 @@
 // Short end-to-end runs of the driver: outputs exist and say what the physics says.
 #include <catch2/catch.hpp>
 
+#include "driver_test_util.hpp"
 #include "driver/csv_columns.hpp"
 #include "driver/model_registry.hpp"
 #include "driver/scene.hpp"
@@ -17,49 +18,6 @@
 using namespace epac;
 using namespace epac::driver;
 namespace fs = std::filesystem;
-
-namespace {
-
-fs::path fresh_dir(const std::string& tag) {
-  static int counter = 0;
-  const fs::path dir = fs::temp_directory_path() /
-                       ("epac-driver-run-" + std::to_string(getpid()) + "-" + tag + "-" + std::to_string(counter++));
-  fs::remove_all(dir);  // a leftover of an earlier process with the same pid would be refused
-  return dir;
-}
-
-// timeseries.csv as columns by name.
-std::map<std::string, std::vector<double>> read_csv(const fs::path& path) {
-  std::ifstream in(path);
-  std::string line;
-  std::getline(in, line);
-  std::vector<std::string> names;
-  {
-    std::stringstream s(line);
-    std::string c;
-    while (std::getline(s, c, ',')) names.push_back(driver::csv_column_name(c));  // without the unit
-  }
-  std::map<std::string, std::vector<double>> cols;
-  while (std::getline(in, line)) {
-    std::stringstream s(line);
-    std::string c;
-    for (const auto& n : names) {
-      std::getline(s, c, ',');
-      cols[n].push_back(std::stod(c));
-    }
-  }
-  return cols;
-}
-
-RunSummary run_text(const std::string& text, const fs::path& dir, const std::string& precision = "double") {
-  RunOptions opt;
-  opt.out_dir = dir.string();
-  opt.quiet = true;
-  opt.precision = precision;
-  return run(parse_scene_string(text, "test.toml"), opt);
-}
-
-}  // namespace
 
 TEST_CASE("a head-on linear-spring collision rebounds with the restitution coefficient", "[driver][run]") {
   // Two equal spheres, closing speed 0.2 m/s, no gravity, no friction. Linear spring-dashpot with
@@ -93,15 +51,15 @@ output_interval = 10
 )";
   for (const std::string precision : {"double", "float"}) {
     SECTION(precision) {
-      const fs::path dir = fresh_dir("collide");
-      const RunSummary s = run_text(text, dir, precision);
+      const fs::path dir = test::fresh_out_dir("collide");
+      const RunSummary s = test::run_scene_text(text, dir, precision);
       CHECK(s.particles == 2);
       CHECK(s.steps == 1500);
       CHECK(s.effects == "damping");
       CHECK(s.scalar == precision);
       CHECK(s.history_fields == 0);
       REQUIRE(fs::exists(dir / "summary.json"));
-      const auto c = read_csv(dir / "timeseries.csv");
+      const auto c = test::read_csv_columns(dir / "timeseries.csv");
       const auto& ke = c.at("ke_translational");
       REQUIRE(ke.size() == 151);
       const double ratio = ke.back() / ke.front();
@@ -146,9 +104,9 @@ steps = 3000
 output_interval = 100
 skin = 5e-5
 )";
-  const fs::path dir = fresh_dir("press");
-  run_text(text, dir);
-  const auto c = read_csv(dir / "timeseries.csv");
+  const fs::path dir = test::fresh_out_dir("press");
+  test::run_scene_text(text, dir);
+  const auto c = test::read_csv_columns(dir / "timeseries.csv");
   const double E_star = 1e6 / (1 - 0.09);
   int checked = 0;
   for (std::size_t k = 0; k < c.at("time").size(); ++k) {

@@ -2,6 +2,7 @@
 // names the key (with its table), the value and the valid range.
 #include <catch2/catch.hpp>
 
+#include "driver_test_util.hpp"
 #include "driver/model_registry.hpp"
 #include "driver/scene.hpp"
 
@@ -154,14 +155,6 @@ std::vector<BadCase> bad_cases() {
   };
 }
 
-fs::path fresh_dir(const std::string& tag) {
-  static int counter = 0;
-  const fs::path dir = fs::temp_directory_path() /
-                       ("epac-driver-test-" + std::to_string(getpid()) + "-" + tag + "-" + std::to_string(counter++));
-  fs::remove_all(dir);  // a leftover of an earlier process with the same pid would be refused
-  return dir;
-}
-
 }  // namespace
 
 TEST_CASE("bad scenes are rejected with key, value and range", "[driver][scene][validation]") {
@@ -191,7 +184,7 @@ TEST_CASE("the base scene of the rejection cases is valid", "[driver][scene][val
 TEST_CASE("a rejected scene runs nothing and writes nothing", "[driver][scene][validation]") {
   for (const auto& c : bad_cases()) {
     SECTION(c.what) {
-      const fs::path dir = fresh_dir("in");
+      const fs::path dir = test::fresh_out_dir("in");
       fs::create_directories(dir);
       const fs::path scene = dir / "bad.toml";
       std::ofstream(scene) << c.text;
@@ -204,7 +197,7 @@ TEST_CASE("a rejected scene runs nothing and writes nothing", "[driver][scene][v
     }
   }
   SECTION("invalid precision on a valid scene") {
-    const fs::path dir = fresh_dir("prec");
+    const fs::path dir = test::fresh_out_dir("prec");
     fs::create_directories(dir);
     const fs::path scene = dir / "ok.toml";
     std::ofstream(scene) << base_scene("", kSecond);

@@ -8,10 +8,15 @@
 
 #include <array>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace epac {
 namespace test {
+
+// The Poisson ratio of the MDR tests' materials, and an infinite yield stress (elastic).
+constexpr double kNu = 0.3;
+constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // For ContactStepper::evaluate on an MDR contact: one field of the stored contact's outputs
 // (m.outputs), as a functor the device can call (a test's lambda is host code).

@@ -12,8 +12,6 @@ using namespace epac;
 using namespace epac::test;
 
 namespace {
-constexpr double kNu = 0.3;
-const double kInf = std::numeric_limits<double>::infinity();
 
 // load to dmax, unload to -dneg in n steps each
 std::vector<double> load_unload(double dmax, double dneg, int n_load, int n_unload) {

@@ -13,11 +13,6 @@
 using namespace epac;
 using namespace epac::test;
 
-namespace {
-constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr double kNu = 0.3;
-}  // namespace
-
 // (36) takes min(delta_max, R) and (42) is pi (2 delta R - delta^2) + c_A, whose delta-part peaks
 // at delta = R; (33)-(35) floor z_R and the recovery ratio. One side is loaded through R to 1.6 R
 // and unloaded past separation, elastic and at E/Y 6.25 and 1e4, float and double.

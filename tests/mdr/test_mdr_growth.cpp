@@ -10,7 +10,6 @@ using namespace epac;
 using namespace epac::test;
 
 namespace {
-constexpr double kNu = 0.3;
 std::vector<double> two_flat_path(double peak, int n_load, int n_unload, double end = 0.0) {
   std::vector<double> p;
   append_ramp(p, 0.0, peak, n_load);

@@ -120,7 +120,7 @@ std::vector<std::vector<double>> host_rows(const ContactHistory<T, D>& h) {
 // MDR history fields of one side (mdr_model.hpp layout with plasticity and growth, no adhesion):
 // delta_o_max, yielded, c_A, delta_p, delta_o_prev, eps_prev.
 
-double E = 1.0e8, kNu = 0.3;
+double E = 1.0e8;  // and kNu (mdr_test_helpers.hpp)
 
 }  // namespace
 

@@ -10,7 +10,6 @@ using namespace epac;
 using namespace epac::test;
 
 namespace {
-constexpr double kNu = 0.3;
 
 // Two particles on the x axis (gids gid0, gid1, radii R0, R1), pressed through a sequence of
 // total overlaps; returns the normal force on the first particle along n (law output) and checks

@@ -23,7 +23,6 @@ using namespace epac;
 using namespace epac::test;
 
 namespace {
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 double plane_strain(double E, double nu) { return E / (1 - nu * nu); }
 

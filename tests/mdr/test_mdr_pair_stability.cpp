@@ -15,7 +15,6 @@ using namespace epac;
 using namespace epac::test;
 
 namespace {
-constexpr double kInf = std::numeric_limits<double>::infinity();
 using GrowthEffects = Effects<kPlasticity | kAdhesion | kRadiusGrowth>;
 
 // Work put in (loading steps) and returned (unloading steps) along a path, trapezoid rule.

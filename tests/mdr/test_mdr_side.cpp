@@ -11,7 +11,6 @@ using namespace epac;
 using namespace epac::test;
 
 namespace {
-constexpr double kNu = 0.3;
 double eeff(double E) { return E / (1.0 - kNu * kNu); }
 double hertz(double E_eff, double R, double d) { return 4.0 / 3.0 * E_eff * std::sqrt(R) * std::pow(d, 1.5); }
 double hardening(double Y, double x) { return Y * (1.75 * std::exp(-4.4 * x) + 1.0); }

@@ -13,7 +13,6 @@ using namespace epac;
 using namespace epac::test;
 
 namespace {
-constexpr double kNu = 0.3;
 bool all_finite(const std::vector<double>& v) {
   for (double x : v)
     if (!std::isfinite(x)) return false;
