@@ -37,6 +37,20 @@ ContactList<Device> list_with_room(const ContactList<Device>& old, int count, co
 }
 }  // namespace detail
 
+// The largest radius (0 for no particles).
+template <class T, class Device>
+T max_radius(const Particles<T, Device>& p) {
+  T rmax = T(0);
+  auto r = p.radius;
+  Kokkos::parallel_reduce(
+      "epac::driver::max_radius", Kokkos::RangePolicy<typename Device::execution_space>(0, p.n),
+      KOKKOS_LAMBDA(int i, T& m) {
+        if (r(i) > m) m = r(i);
+      },
+      Kokkos::Max<T>(rmax));
+  return rmax;
+}
+
 // Pairs within R_i + R_j + skin (minimum-image distance on p.box's periodic axes), each once,
 // stored with gid(first) < gid(second). `reuse` donates its storage if large enough.
 // rows (optional): set to the list's row offsets over i = min(first, second) (n + 1 entries:
@@ -55,14 +69,7 @@ ContactList<Device> find_pairs(const Particles<T, Device>& p, const CellList<T, 
   auto r = p.radius;
   const PeriodicBox<P> box = p.box;  // distances by minimum image on its periodic axes
   const bool periodic = box.periodic();
-  // every partner of i lies within ri + rmax + skin: cells farther away are not searched
-  T rmax = T(0);
-  Kokkos::parallel_reduce(
-      "epac::driver::max_radius", Kokkos::RangePolicy<exec>(0, n),
-      KOKKOS_LAMBDA(int q, T& m) {
-        if (r(q) > m) m = r(q);
-      },
-      Kokkos::Max<T>(rmax));
+  const T rmax = max_radius(p);  // every partner of i is within ri + rmax + skin: cells farther away are not searched
   Kokkos::View<int*, Device> offset("epac::driver::pair_offset", n + 1);
   constexpr int K = kPairScratch;
   Kokkos::View<int*, Device> scratch(Kokkos::view_alloc(Kokkos::WithoutInitializing, "epac::driver::pair_scratch"),
@@ -245,15 +252,7 @@ class ContactDetector {
   // lists are then built on the reordered particles, whose cell list is the identity.
   using sort_callback = std::function<void(const Kokkos::View<int*, Device>&)>;
   void detect(const Particles<T, Device>& p, const Walls<T, Device>& w, const sort_callback* on_sort = nullptr) {
-    T rmax = T(0);
-    auto r = p.radius;
-    Kokkos::parallel_reduce(
-        "epac::driver::max_radius", Kokkos::RangePolicy<exec>(0, p.n),
-        KOKKOS_LAMBDA(int i, T& m) {
-          if (r(i) > m) m = r(i);
-        },
-        Kokkos::Max<T>(rmax));
-    CellList<T, Device> cells = build_cell_list(p, T(2) * rmax + skin_);
+    CellList<T, Device> cells = build_cell_list(p, T(2) * max_radius(p) + skin_);
     if (on_sort && *on_sort) {
       (*on_sort)(cells.sorted);
       reordered_ = true;  // the histories' row offsets no longer match the indices
