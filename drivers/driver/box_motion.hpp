@@ -24,9 +24,20 @@
 namespace epac {
 namespace driver {
 
+// One deformation step's map of the positions, x' = c + r (x - c) along each axis; when any edge
+// changed it maps all three (an unchanged axis has r = 1), as LAMMPS's remap x does.
+template <class P>
+struct AffineRemap {
+  bool active = false;
+  P ratio[3] = {P(1), P(1), P(1)};
+  P centre[3] = {P(0), P(0), P(0)};
+  KOKKOS_INLINE_FUNCTION P operator()(P x, int d) const { return centre[d] + ratio[d] * (x - centre[d]); }
+};
+
 template <class T, class Device>
 class BoxMotion {
  public:
+  using P = typename Particles<T, Device>::position_type;
   explicit BoxMotion(const BoxSpec& spec) : spec_(spec) {
     for (int d = 0; d < 3; ++d) edge_[d] = spec.enabled ? spec.edge0(d) : 0.0;
   }
@@ -61,36 +72,29 @@ class BoxMotion {
         });
   }
 
-  // Deforms the box to its edges at `step` and maps the positions affinely (remap x). Returns
-  // whether anything changed.
-  bool deform_to(Particles<T, Device>& p, std::int64_t step) {
-    if (!spec_.enabled || !spec_.deform) return false;
+  // Deforms the box to its edges at `step` (p.box included) and returns the affine map of the
+  // positions (remap x), which the caller applies: the driver's kick_drift, in the pass that
+  // drifts them, instead of a pass of its own. Inactive when nothing changed.
+  AffineRemap<P> deform_to(Particles<T, Device>& p, std::int64_t step) {
+    AffineRemap<P> map;
+    if (!spec_.enabled || !spec_.deform) return map;
     std::array<double, 3> next;
-    P ratio[3], centre[3];
     bool changed = false;
     for (int d = 0; d < 3; ++d) {
       next[d] = spec_.edge(d, step);
-      ratio[d] = P(next[d] / edge_[d]);
-      centre[d] = P(spec_.centre(d));
+      map.ratio[d] = P(next[d] / edge_[d]);
+      map.centre[d] = P(spec_.centre(d));
       if (next[d] != edge_[d]) changed = true;
     }
-    if (!changed) return false;
+    if (!changed) return AffineRemap<P>{};
     edge_ = next;
     apply(p);
-    auto x = p.x;
-    const P r0 = ratio[0], r1 = ratio[1], r2 = ratio[2], c0 = centre[0], c1 = centre[1], c2 = centre[2];
-    Kokkos::parallel_for(
-        "epac::driver::remap_x", Kokkos::RangePolicy<exec>(0, p.n), KOKKOS_LAMBDA(int i) {
-          x(i, 0) = c0 + r0 * (x(i, 0) - c0);
-          x(i, 1) = c1 + r1 * (x(i, 1) - c1);
-          x(i, 2) = c2 + r2 * (x(i, 2) - c2);
-        });
-    return true;
+    map.active = true;
+    return map;
   }
 
  private:
   using exec = typename Device::execution_space;
-  using P = typename Particles<T, Device>::position_type;
   const BoxSpec& spec_;
   std::array<double, 3> edge_{0, 0, 0};
 };

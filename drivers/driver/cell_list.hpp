@@ -167,7 +167,9 @@ CellList<T, Device> build_cell_list(const Particles<T, Device>& p, T min_cell) {
       throw std::runtime_error(std::to_string(bad) +
                                " particle coordinates are not finite: the simulation diverged "  // host
                                "(time step too large?)");                                        // host
+    const P box_length[3] = {p.box.length.x, p.box.length.y, p.box.length.z};
     for (int d = 0; d < 3; ++d) {
+      if (box_length[d] > P(0)) continue;  // periodic: the grid is the box (below)
       Kokkos::MinMaxScalar<P> mm;
       Kokkos::parallel_reduce(
           "epac::driver::bounding_box", Kokkos::RangePolicy<exec>(0, n),

@@ -57,7 +57,8 @@ T max_radius(const Particles<T, Device>& p) {
 // the pairs found from particle i are entries rows(i) .. rows(i+1)-1), for remap_by_rows.
 // The count pass keeps up to kPairScratch partners per particle, so the fill pass copies them
 // instead of searching the cells again (the same list in the same order; a particle with more
-// partners searches again).
+// partners searches again). Its rows have one more slot, where candidates that are not partners
+// land once the row is full.
 constexpr int kPairScratch = 16;
 template <class T, class Device>
 ContactList<Device> find_pairs(const Particles<T, Device>& p, const CellList<T, Device>& cells, T skin,
@@ -73,20 +74,23 @@ ContactList<Device> find_pairs(const Particles<T, Device>& p, const CellList<T, 
   Kokkos::View<int*, Device> offset("epac::driver::pair_offset", n + 1);
   constexpr int K = kPairScratch;
   Kokkos::View<int*, Device> scratch(Kokkos::view_alloc(Kokkos::WithoutInitializing, "epac::driver::pair_scratch"),
-                                     static_cast<std::size_t>(n) * K);
+                                     static_cast<std::size_t>(n) * (K + 1));
   Kokkos::parallel_for(
       "epac::driver::pair_count", Kokkos::RangePolicy<exec>(0, n), KOKKOS_LAMBDA(int i) {
         const Vec3<P> xi = load3(x, i);
         const T ri = r(i);
         int c = 0;
+        const std::size_t row = static_cast<std::size_t>(i) * (K + 1);
+        // Branch-free: every candidate is stored at the next free slot and kept by counting it
+        // (a partner in about 1 of 4 candidates, at random, is a branch the CPU mispredicts).
+        // A full row's candidates land in its spare slot K, which is never read: the fill pass
+        // copies slots below c <= K, and searches again for c > K.
         cells.for_each_near_above(xi, i, P(ri) + P(rmax) + P(skin), [&](int j) {
           Vec3<P> d = xi - load3(x, j);
           if (periodic) d = box.minimum_image(d);
           const P cut = P(ri) + P(r(j)) + P(skin);
-          if (dot(d, d) < cut * cut) {
-            if (c < K) scratch(static_cast<std::size_t>(i) * K + c) = j;
-            ++c;
-          }
+          scratch(row + (c < K ? c : K)) = j;
+          c += dot(d, d) < cut * cut ? 1 : 0;
         });
         offset(i) = c;
       });
@@ -109,7 +113,7 @@ ContactList<Device> find_pairs(const Particles<T, Device>& p, const CellList<T, 
         const int c = offset(i + 1) - k;
         if (c <= K) {  // the count pass's partners, in its order
           for (int m = 0; m < c; ++m) {
-            const int j = scratch(static_cast<std::size_t>(i) * K + m);
+            const int j = scratch(static_cast<std::size_t>(i) * (K + 1) + m);
             const bool swap = gid(j) < gid(i);  // oriented by global id (below)
             first(k + m) = swap ? j : i;
             second(k + m) = swap ? i : j;
@@ -191,27 +195,41 @@ ContactList<Device> find_wall_contacts(const Particles<T, Device>& p, const Wall
   return list;
 }
 
-// remap_history (compute/history_remap.hpp) for a list rebuilt on unchanged particle indices:
-// a persisting contact keeps the particle it is found from (pairs: i = min(first, second);
-// walls: first), so its old row lies among the few of the old list's rows of that particle
-// (old_rows, the old list's row offsets). A scan of those keys replaces the sort of all old keys
-// and a binary search per contact, which cost about as much as the detection itself. The same
-// rows are carried over (keys are unique), so the result equals remap_history's.
+// remap_history (compute/history_remap.hpp) for a rebuilt list: a persisting contact was found
+// from one particle in the old list (pairs: the lower index, walls: the particle), so its old row
+// lies among the few of the old list's rows of that particle (old_rows, the old list's row
+// offsets). A scan of those keys replaces the sort of all old keys and a binary search per
+// contact, which cost about as much as the detection itself. The same rows are carried over
+// (keys are unique), so the result equals remap_history's.
+// old_index: empty if the particle indices are those of the old list; after a spatial sort, the
+// old index of each particle (the sort's permutation: new index k was old_index(k)).
+// The result holds `new_keys` itself (not a copy: the caller's keys are fresh, pair_contact_keys)
+// and its rows are written once, each either carried over or zeroed (no zero fill before).
 template <class T, class Device>
 ContactHistory<T, Device> remap_by_rows(const ContactHistory<T, Device>& old,
                                         const Kokkos::View<int*, Device>& old_rows, const ContactList<Device>& list,
-                                        bool pairs, const Kokkos::View<std::uint64_t*, Device>& new_keys, int fields) {
+                                        bool pairs, const Kokkos::View<std::uint64_t*, Device>& new_keys, int fields,
+                                        const Kokkos::View<int*, Device>& old_index = {}) {
   using exec = typename Device::execution_space;
-  ContactHistory<T, Device> fresh(new_keys, fields, "history");
-  if (fields == 0 || old.rows() == 0 || list.count == 0) return fresh;
+  if (fields == 0 || old.rows() == 0 || list.count == 0) return ContactHistory<T, Device>(new_keys, fields, "history");
+  ContactHistory<T, Device> fresh;
+  fresh.fields = fields;
+  fresh.keys = new_keys;
+  fresh.data = typename ContactHistory<T, Device>::data_view(
+      Kokkos::view_alloc(Kokkos::WithoutInitializing, "history.data"), new_keys.extent(0), fields);
   auto okeys = old.keys;
   auto odata = old.data;
   auto ndata = fresh.data;
   auto first = list.first;
   auto second = list.second;
+  const bool reindexed = old_index.extent(0) > 0;
   Kokkos::parallel_for(
       "epac::driver::remap_by_rows", Kokkos::RangePolicy<exec>(0, list.count), KOKKOS_LAMBDA(int k) {
-        const int a = first(k), b = second(k);
+        int a = first(k), b = second(k);
+        if (reindexed) {
+          a = old_index(a);
+          if (pairs) b = old_index(b);  // walls: b is the wall
+        }
         const int i = pairs && b < a ? b : a;
         const std::uint64_t key = new_keys(k);
         for (int s = old_rows(i); s < old_rows(i + 1); ++s)
@@ -219,6 +237,7 @@ ContactHistory<T, Device> remap_by_rows(const ContactHistory<T, Device>& old,
             for (int f = 0; f < fields; ++f) ndata(k, f) = odata(s, f);
             return;
           }
+        for (int f = 0; f < fields; ++f) ndata(k, f) = T(0);  // a new contact
       });
   return fresh;
 }
@@ -250,12 +269,33 @@ class ContactDetector {
   // on_sort (optional; the driver's [run] spatial_sort): called with the cell-order permutation
   // (new index k = old index perm(k)); it must reorder every per-particle array in place. The
   // lists are then built on the reordered particles, whose cell list is the identity.
+  // when: sort now, or only if the cell grid's dimensions differ from those at the last sort
+  // (the order then no longer follows the cells). Returns whether it sorted.
   using sort_callback = std::function<void(const Kokkos::View<int*, Device>&)>;
-  void detect(const Particles<T, Device>& p, const Walls<T, Device>& w, const sort_callback* on_sort = nullptr) {
+  enum class SortWhen { now, if_grid_changed };
+  bool detect(const Particles<T, Device>& p, const Walls<T, Device>& w, const sort_callback* on_sort = nullptr,
+              SortWhen when = SortWhen::now) {
     CellList<T, Device> cells = build_cell_list(p, T(2) * max_radius(p) + skin_);
-    if (on_sort && *on_sort) {
+    const bool grid_changed = cells.nx != sort_grid_[0] || cells.ny != sort_grid_[1] || cells.nz != sort_grid_[2];
+    const bool sort = on_sort && *on_sort && (when == SortWhen::now || grid_changed);
+    if (sort) {
+      sort_grid_[0] = cells.nx;
+      sort_grid_[1] = cells.ny;
+      sort_grid_[2] = cells.nz;
       (*on_sort)(cells.sorted);
-      reordered_ = true;  // the histories' row offsets no longer match the indices
+      // The histories' rows are by the indices before the sort: remap() looks them up through
+      // the permutation (composed with an earlier one not yet remapped).
+      if (old_index_.extent(0) > 0) {
+        const Kokkos::View<int*, Device> earlier = old_index_, perm = cells.sorted;
+        Kokkos::View<int*, Device> both(Kokkos::view_alloc(Kokkos::WithoutInitializing, "epac::driver::old_index"),
+                                        p.n);
+        Kokkos::parallel_for(
+            "epac::driver::compose_sorts", Kokkos::RangePolicy<exec>(0, p.n),
+            KOKKOS_LAMBDA(int k) { both(k) = earlier(perm(k)); });
+        old_index_ = both;
+      } else {
+        old_index_ = cells.sorted;
+      }
       Kokkos::View<int*, Device> identity(Kokkos::view_alloc(Kokkos::WithoutInitializing, "epac::driver::cell_sorted"),
                                           p.n);
       Kokkos::parallel_for(
@@ -274,30 +314,33 @@ class ContactDetector {
     Kokkos::deep_copy(r_build_, p.radius);
     Kokkos::deep_copy(wall_build_, w.point);
     ++builds;
+    return sort;
   }
-  // Without a spatial sort since the histories' lists were built, by the old lists' rows
-  // (remap_by_rows, the same result); otherwise by sorted keys (remap_history).
+  // By the old lists' rows (remap_by_rows, through the permutation of a spatial sort since), or
+  // where those do not fit (the first build, another particle count, another history) by sorted
+  // keys (remap_history): the same result.
   void remap(const Particles<T, Device>& p) {
-    const bool rows_valid = !reordered_ && static_cast<int>(hist_pair_rows_.extent(0)) == p.n + 1 &&
-                            static_cast<int>(hist_wall_rows_.extent(0)) == p.n + 1;
+    const bool rows_valid = static_cast<int>(hist_pair_rows_.extent(0)) == p.n + 1 &&
+                            static_cast<int>(hist_wall_rows_.extent(0)) == p.n + 1 &&
+                            (old_index_.extent(0) == 0 || static_cast<int>(old_index_.extent(0)) == p.n);
     auto by_rows = [&](const ContactHistory<T, Device>& h, int fields, int old_count) {
       return rows_valid && h.fields == fields && h.has_keys() && h.rows() == old_count;
     };
     if (by_rows(pair_history, pair_fields_, hist_pairs_))
-      pair_history =
-          remap_by_rows(pair_history, hist_pair_rows_, pairs, true, pair_contact_keys(p, pairs), pair_fields_);
+      pair_history = remap_by_rows(pair_history, hist_pair_rows_, pairs, true, pair_contact_keys(p, pairs),
+                                   pair_fields_, old_index_);
     else
       pair_history = remap_history(pair_history, pair_contact_keys(p, pairs), pair_fields_);
     if (by_rows(wall_history, wall_fields_, hist_walls_))
-      wall_history =
-          remap_by_rows(wall_history, hist_wall_rows_, walls, false, wall_contact_keys(p, walls), wall_fields_);
+      wall_history = remap_by_rows(wall_history, hist_wall_rows_, walls, false, wall_contact_keys(p, walls),
+                                   wall_fields_, old_index_);
     else
       wall_history = remap_history(wall_history, wall_contact_keys(p, walls), wall_fields_);
     hist_pair_rows_ = pair_rows_;
     hist_wall_rows_ = wall_rows_;
     hist_pairs_ = pairs.count;
     hist_walls_ = walls.count;
-    reordered_ = false;
+    old_index_ = {};
   }
 
   // max_i (|x_i - x_i,build| + max(0, R_i - R_i,build)).
@@ -367,10 +410,12 @@ class ContactDetector {
   position_view x_build_, wall_build_;
   Kokkos::View<T*, Device> r_build_;
   // Row offsets of the lists (find_pairs / find_wall_contacts) and of the lists the histories
-  // belong to, with those lists' lengths; reordered_: a sort since (remap_by_rows not valid).
+  // belong to, with those lists' lengths; old_index_: empty, or after a sort since, each
+  // particle's index in those lists.
   Kokkos::View<int*, Device> pair_rows_, wall_rows_, hist_pair_rows_, hist_wall_rows_;
   int hist_pairs_ = 0, hist_walls_ = 0;
-  bool reordered_ = false;
+  Kokkos::View<int*, Device> old_index_;
+  int sort_grid_[3] = {0, 0, 0};  // the cell grid at the last sort
 };
 
 }  // namespace driver

@@ -10,8 +10,11 @@
 // Spheres: I = (2/5) m R0^2 (Particles::inertia). Driven particles keep their prescribed
 // velocity and angular velocity: they drift but are never kicked.
 // kick_drift fuses the closing half kick of one step with the opening half kick and drift of the
-// next (kick_dt = dt), zeroes the consumed forces and measures the displacement for the rebuild
-// rule, all in one pass: 1 parallel region instead of 5, which matters most on busy cores.
+// next (kick_dt = dt), the box deformation's remap of the positions, zeroes the consumed forces
+// (where the force pass does not overwrite them) and measures the displacement for the rebuild rule, all in one pass: 1 parallel region
+// instead of 6, which matters most on busy cores.
+#include "driver/box_motion.hpp"
+
 #include <epac/core/vec3.hpp>
 #include <epac/state/particles.hpp>
 
@@ -42,12 +45,13 @@ void half_kick(const Particles<T, Device>& p, const Kokkos::View<unsigned char*,
 }
 
 // v += kick_dt (F/m + g), omega += kick_dt torque/I (not for driven particles); force = torque
-// = 0; x += dt v (in double). Returns max_i (|x_i - x_ref_i| + max(0, R_i - R_ref_i)), the rebuild
+// = 0 (unless !zero_forces: the next pass overwrites them, ForceSums::end(true)); x = remap(x) (a box deformation's affine map, when active) + dt v (in double). Returns max_i (|x_i - x_ref_i| + max(0, R_i - R_ref_i)), the rebuild
 // measure of ContactDetector (a non-finite position returns 1e30 so that the rebuild reports it).
 template <class T, class Device>
 T kick_drift(const Particles<T, Device>& p, const Kokkos::View<unsigned char*, Device>& driven, const Vec3<T>& gravity,
              T kick_dt, typename Particles<T, Device>::position_type dt,
-             const typename Particles<T, Device>::position_view& x_ref, const Kokkos::View<T*, Device>& r_ref) {
+             const typename Particles<T, Device>::position_view& x_ref, const Kokkos::View<T*, Device>& r_ref,
+             const AffineRemap<typename Particles<T, Device>::position_type>& remap = {}, bool zero_forces = true) {
   using exec = typename Device::execution_space;
   using P = typename Particles<T, Device>::position_type;
   auto x = p.x;
@@ -71,9 +75,12 @@ T kick_drift(const Particles<T, Device>& p, const Kokkos::View<unsigned char*, D
           for (int d = 0; d < 3; ++d) w(i, d) += kick_dt * tq(i, d) * inv_I;
         }
         for (int d = 0; d < 3; ++d) {
-          f(i, d) = T(0);
-          tq(i, d) = T(0);
-          x(i, d) += dt * P(v(i, d));
+          if (zero_forces) {
+            f(i, d) = T(0);
+            tq(i, d) = T(0);
+          }
+          const P xd = remap.active ? remap(x(i, d), d) : x(i, d);
+          x(i, d) = xd + dt * P(v(i, d));
         }
         const T grow = R(i) - r_ref(i);
         const T si = T(norm(load3(x, i) - load3(x_ref, i))) + (grow > T(0) ? grow : T(0));

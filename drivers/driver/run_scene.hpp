@@ -152,11 +152,11 @@ class SceneRun {
   // The first contact lists, the initial history, and the force pass's accumulators.
   void build_contacts() {
     on_sort_ = [this](const Kokkos::View<int*, Device>& perm) { sort_particles(perm); };
-    det_.detect(p_, walls_, sort_at(0));
+    detect(0);
     det_.remap(p_);
     // [run] initial_history: contacts overlapping at step 0 start from a quasi-static load
     if (start_history(scene_, model_, p_, walls_, det_, sum_, info_)) {
-      det_.detect(p_, walls_, sort_at(0));  // the load grew radii past the skin rule
+      detect(0);  // the load grew radii past the skin rule
       det_.remap(p_);
     }
     wall_driver_->mark_build();
@@ -165,24 +165,35 @@ class SceneRun {
     deterministic_ = opt_.deterministic || scene_.run.deterministic;
     if (deterministic_) det_pass_.rebuild(p_, det_.pairs, det_.walls);
     if (info_ && deterministic_) std::printf("deterministic mode: the same bits on any thread count\n");
+    // Per-thread sums (host backends) set the forces at the end of a pass, so kick_drift need not
+    // zero them (a write of 48 B per particle and step); atomic and plain sums and the
+    // deterministic pass add into them.
+    overwrite_forces_ = sums_are_duplicated<Device, typename ForceSums<T, Device>::policy>() && !deterministic_;
     // One accumulator for all passes (its per-thread copies are allocated once); rebound if the
     // particle views are ever reallocated.
     sums_ = ForceSums<T, Device>(p_);
   }
 
-  // [run] spatial_sort: whether the detection at `step` reorders the particles (the callback) or
-  // not (null). auto: a scene of at least kAutoSortMinParticles particles is sorted at its first
-  // build and then at the first rebuild sort_interval steps after the last sort.
-  const typename ContactDetector<T, Device>::sort_callback* sort_at(std::int64_t step) {
+  // The lists at `step` ([run] spatial_sort decides whether the detection reorders the particles).
+  // auto: a scene of at least kAutoSortMinParticles particles is sorted at its first build, at
+  // the first rebuild sort_interval steps after the last sort, and at a rebuild whose cell grid
+  // has other dimensions than at the last sort (a deforming box, a spreading bed: the order no
+  // longer follows the cells, and the pair search pays for it).
+  void detect(std::int64_t step) {
     using Sort = RunSpec::Sort;
+    using When = typename ContactDetector<T, Device>::SortWhen;
     const Sort mode = scene_.run.spatial_sort;
-    bool now = mode == Sort::always;
-    if (mode == Sort::automatic && p_.n >= kAutoSortMinParticles)
-      now = last_sort_step_ < 0 || step - last_sort_step_ >= scene_.run.sort_interval;
-    if (!now) return nullptr;
-    last_sort_step_ = step;
-    ++sorts_;
-    return &on_sort_;
+    const typename ContactDetector<T, Device>::sort_callback* sort = nullptr;
+    When when = When::now;
+    if (mode == Sort::always) sort = &on_sort_;
+    if (mode == Sort::automatic && p_.n >= kAutoSortMinParticles) {
+      sort = &on_sort_;
+      if (last_sort_step_ >= 0 && step - last_sort_step_ < scene_.run.sort_interval) when = When::if_grid_changed;
+    }
+    if (det_.detect(p_, walls_, sort, when)) {
+      last_sort_step_ = step;
+      ++sorts_;
+    }
   }
 
   // Every per-particle array follows the cell order (a sorting detection).
@@ -217,7 +228,8 @@ class SceneRun {
     sum_.setup_time_s = std::chrono::duration<double>(clock::now() - setup_start_).count();
   }
 
-  // Forces are zeroed by kick_drift (and are zero on allocation before the first pass).
+  // Forces are zeroed by kick_drift or overwritten by sums_.end (overwrite_forces_), and are zero
+  // on allocation before the first pass.
   // `step`: the step whose forces these are (for contacts.csv).
   // Phases (--phase-times): force (hooks, both lists, sums.end()), output (contacts.csv),
   // growth (after_forces).
@@ -238,7 +250,7 @@ class SceneRun {
     if (deterministic_)
       det_pass_.end(model_, p_);
     else
-      sums_.end();
+      sums_.end(overwrite_forces_);
     phases_.lap(Phase::force);
     if (with_outputs && contacts_csv_) {  // before after_forces: the geometry the force pass saw
       contacts_csv_->write(step, step * scene_.run.dt,
@@ -356,12 +368,13 @@ class SceneRun {
   // particles' shift for the rebuild rule.
   T advance(std::int64_t step) {
     driven_motion_->advance(p_, (step - 1) * scene_.run.dt, scene_.run.dt);
-    // [box.deform] remap x, before the drift: the rebuild measure below sees it as displacement
-    box_.deform_to(p_, step);
+    // [box.deform] remap x, before the drift (in kick_drift's pass): the rebuild measure below
+    // sees it as displacement
+    const auto remap = box_.deform_to(p_, step);
     // closing half kick of the previous step (if deferred) + opening half kick + drift
     // the drift in double with the scene's dt (positions are double, state/particles.hpp)
     const T shift = kick_drift(p_, driven_, g_, full_step_velocities_ ? half_dt_ : dt_, scene_.run.dt,
-                               det_.reference_positions(), det_.reference_radii());
+                               det_.reference_positions(), det_.reference_radii(), remap, !overwrite_forces_);
     wall_driver_->advance((step - 1) * scene_.run.dt, scene_.run.dt);
     phases_.lap(Phase::integration);
     return shift;
@@ -370,7 +383,7 @@ class SceneRun {
   // The skin is used up: new lists, their history, the deterministic incidences.
   void rebuild_contacts(std::int64_t step) {
     box_.wrap(p_);  // then detect() records the wrapped positions as the reference: a wrap is no motion
-    det_.detect(p_, walls_, sort_at(step));
+    detect(step);
     wall_driver_->mark_build();
     phases_.lap(Phase::detection);
     det_.remap(p_);
@@ -485,6 +498,7 @@ class SceneRun {
   std::int64_t last_sort_step_ = -1;  // [run] spatial_sort = "auto"
   std::int64_t sorts_ = 0;            // detections that reordered the particles (setup included)
   bool deterministic_ = false;
+  bool overwrite_forces_ = false;  // sums_.end sets the forces: kick_drift does not zero them
   DeterministicPass<T, Device> det_pass_;
   ForceSums<T, Device> sums_;
   PhaseTimer phases_;

@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include "driver/contact_detection.hpp"
+#include "driver/spatial_sort.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -129,6 +130,53 @@ void tag_history(const ContactList<D>& c, const ContactHistory<double, D>& hist,
       });
 }
 
+// Every coordinate moved by up to `by`.
+void jiggle(HostPacking& h, double by, std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int i = 0; i < h.n(); ++i) {
+    h.x[i] += by * u(rng);
+    h.y[i] += by * u(rng);
+    h.z[i] += by * u(rng);
+  }
+}
+
+// The contacts of a list as global-id pairs (walls: (gid, -1 - wall)), in list order.
+template <class D>
+std::vector<std::pair<double, double>> gid_pairs(const ContactList<D>& c, const Particles<double, D>& p, bool walls) {
+  const auto ij = list_pairs(c);
+  auto g = test::to_host(p.gid);
+  std::vector<std::pair<double, double>> v;
+  for (const auto& e : ij) v.push_back({double(g(e.first)), walls ? -1.0 - e.second : double(g(e.second))});
+  return v;
+}
+
+// A rebuilt list's history against the list before (global-id pairs, tagged by tag_history):
+// a persisting contact carries its tags, a new one is zero; some persist, some are new, some
+// vanished.
+template <class D>
+void check_carried_over(const ContactList<D>& c, const ContactHistory<double, D>& hist, const Particles<double, D>& p,
+                        const std::vector<std::pair<double, double>>& old, bool walls) {
+  const std::set<std::pair<double, double>> before(old.begin(), old.end());
+  const auto now = gid_pairs(c, p, walls);
+  auto d = test::to_host(hist.data);
+  REQUIRE(static_cast<int>(d.extent(0)) == c.count);
+  int kept = 0, fresh = 0, wrong = 0;
+  for (int k = 0; k < c.count; ++k) {
+    if (before.count(now[k])) {
+      ++kept;
+      if (d(k, 0) != now[k].first || d(k, 1) != now[k].second || d(k, 2) != 0.5) ++wrong;
+    } else {
+      ++fresh;
+      if (d(k, 0) != 0.0 || d(k, 1) != 0.0 || d(k, 2) != 0.0) ++wrong;
+    }
+  }
+  INFO((walls ? "walls" : "pairs") << ": kept " << kept << ", new " << fresh << ", old " << old.size());
+  CHECK(kept > 0);
+  CHECK(fresh > 0);
+  CHECK(kept < static_cast<int>(old.size()));  // some vanished
+  CHECK(wrong == 0);
+}
+
 }  // namespace
 
 TEMPLATE_LIST_TEST_CASE("the cell list finds exactly the pairs of an O(N^2) search", "[driver][detection]",
@@ -219,59 +267,102 @@ TEMPLATE_LIST_TEST_CASE("the lists are rebuilt when the skin is used up", "[driv
   CHECK(det.builds == 3);
 }
 
+namespace {
+// A packing whose lists were built and each contact's history tagged with its identity
+// (tag_history, as a model would store state), then every particle moved by up to 2 skins:
+// many contacts persist, some vanish, some appear.
+template <class D>
+struct MovedPacking {
+  static constexpr double skin = 1e-4;
+  HostPacking h;
+  Particles<double, D> p;
+  Walls<double, D> w = box_walls<D>(0.02);
+  ContactDetector<double, D> det{skin, 3, 3};
+  std::vector<std::pair<double, double>> old_pairs, old_walls;
+  MovedPacking(unsigned packing_seed, unsigned move_seed)
+      : h(random_packing(2000, 0.8e-3, 1.2e-3, packing_seed)), p(to_device<D>(h)) {
+    det.build(p, w);
+    tag_history(det.pairs, det.pair_history, p, false);
+    tag_history(det.walls, det.wall_history, p, true);
+    old_pairs = gid_pairs(det.pairs, p, false);
+    old_walls = gid_pairs(det.walls, p, true);
+    std::mt19937_64 rng(move_seed);
+    jiggle(h, 2 * skin, rng);
+    p = to_device<D>(h);
+  }
+  // After the caller's rebuild: the histories carried over (check_carried_over).
+  void check() const {
+    check_carried_over(det.pairs, det.pair_history, p, old_pairs, false);
+    check_carried_over(det.walls, det.wall_history, p, old_walls, true);
+  }
+};
+}  // namespace
+
 TEMPLATE_LIST_TEST_CASE("a rebuild and remap keeps the history of persisting contacts", "[driver][detection]",
                         test::Backends) {
+  MovedPacking<TestType> m(23, 99);
+  REQUIRE(m.det.needs_rebuild(m.p, m.w));
+  m.det.build(m.p, m.w);
+  m.check();
+}
+
+TEMPLATE_LIST_TEST_CASE("a rebuild with spatial sorts carries the history over through the permutations",
+                        "[driver][detection]", test::Backends) {
   using D = TestType;
-  HostPacking h = random_packing(2000, 0.8e-3, 1.2e-3, 23);
-  const double skin = 1e-4;
-  auto p = to_device<D>(h);
-  auto w = box_walls<D>(0.02);
-  ContactDetector<double, D> det(skin, 3, 3);
-  det.build(p, w);
-  // Tag each contact's history with its own identity (global ids), as a model would store state.
-  tag_history(det.pairs, det.pair_history, p, false);
-  tag_history(det.walls, det.wall_history, p, true);
-  const auto old_pairs = list_pairs(det.pairs);
-  const auto old_walls = list_pairs(det.walls);
-
-  // Move every particle by up to 2 skins: many contacts persist, some vanish, some appear.
-  std::mt19937_64 rng(99);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  for (int i = 0; i < h.n(); ++i) {
-    h.x[i] += 2 * skin * u(rng);
-    h.y[i] += 2 * skin * u(rng);
-    h.z[i] += 2 * skin * u(rng);
-  }
-  p = to_device<D>(h);
-  REQUIRE(det.needs_rebuild(p, w));
-  det.build(p, w);
-
-  auto check = [&](const ContactList<D>& c, const ContactHistory<double, D>& hist,
-                   const std::vector<std::pair<int, int>>& old, bool walls) {
-    const std::set<std::pair<int, int>> before(old.begin(), old.end());
-    const auto now = list_pairs(c);
-    auto d = test::to_host(hist.data);
-    REQUIRE(static_cast<int>(d.extent(0)) == c.count);
-    int kept = 0, fresh = 0, wrong = 0;
-    for (int k = 0; k < c.count; ++k) {
-      const int i = now[k].first, j = now[k].second;
-      if (before.count(now[k])) {
-        ++kept;
-        const double e1 = walls ? -1.0 - j : double(1000 + 3 * j);
-        if (d(k, 0) != double(1000 + 3 * i) || d(k, 1) != e1 || d(k, 2) != 0.5) ++wrong;
-      } else {
-        ++fresh;
-        if (d(k, 0) != 0.0 || d(k, 1) != 0.0 || d(k, 2) != 0.0) ++wrong;
-      }
-    }
-    INFO("kept " << kept << ", new " << fresh << ", old " << old.size());
-    CHECK(kept > 0);
-    CHECK(fresh > 0);
-    CHECK(kept < static_cast<int>(old.size()));  // some vanished
-    CHECK(wrong == 0);
+  MovedPacking<D> m(31, 7);  // random order: the sorts move nearly everyone
+  const double skin = m.skin;
+  const int n = m.h.n();
+  auto& p = m.p;
+  auto& det = m.det;
+  const auto& w = m.w;
+  std::mt19937_64 rng(8);
+  typename ContactDetector<double, D>::sort_callback sort = [&](const Kokkos::View<int*, D>& perm) {
+    Permuter<double, D>(perm).particles(p);
   };
-  check(det.pairs, det.pair_history, old_pairs, false);
-  check(det.walls, det.wall_history, old_walls, true);
+  // The global ids by index (a copy: on host backends a mirror view would be p.gid itself).
+  auto gids = [&] {
+    auto g = test::to_host(p.gid);
+    return std::vector<int>(g.data(), g.data() + g.extent(0));
+  };
+  const auto g0 = gids();
+  CHECK(det.detect(p, w, &sort));
+  const auto g1 = gids();
+  int moved = 0;  // particles the first sort gave another index
+  for (int k = 0; k < n; ++k) moved += g0[k] != g1[k];
+  // Two sorts before one remap: moves of up to a skin take some particles into other cells, so
+  // the second sort reorders again and the remap must compose the two permutations.
+  {
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.x);
+    for (int k = 0; k < n; ++k)
+      for (int d = 0; d < 3; ++d) x(k, d) += skin * u(rng);
+    Kokkos::deep_copy(p.x, x);
+  }
+  CHECK(det.detect(p, w, &sort));
+  const auto g2 = gids();
+  int moved_again = 0;
+  for (int k = 0; k < n; ++k) moved_again += g1[k] != g2[k];
+  det.remap(p);
+  INFO("reindexed by the sorts: " << moved << ", " << moved_again);
+  REQUIRE(moved > n / 2);
+  REQUIRE(moved_again > 0);
+
+  m.check();
+
+  // SortWhen::if_grid_changed (the driver's auto rule between sort intervals): on the grid of the
+  // last sort no sort; on a spread packing (other cell counts) a sort; SortWhen::now always.
+  using When = typename ContactDetector<double, D>::SortWhen;
+  CHECK_FALSE(det.detect(p, w, &sort, When::if_grid_changed));
+  {
+    auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.x);
+    for (int k = 0; k < n; ++k)
+      for (int d = 0; d < 3; ++d) x(k, d) *= 1.5;
+    Kokkos::deep_copy(p.x, x);
+  }
+  CHECK(det.detect(p, w, &sort, When::if_grid_changed));
+  CHECK_FALSE(det.detect(p, w, &sort, When::if_grid_changed));
+  CHECK(det.detect(p, w, &sort, When::now));
+  CHECK_FALSE(det.detect(p, w, nullptr, When::now));
 }
 
 namespace {

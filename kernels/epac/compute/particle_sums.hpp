@@ -166,7 +166,11 @@ struct ParticleSum {
     if (mode == 1 && target.extent(0) > 0) Kokkos::deep_copy(scatter.copies, value_type(0));
   }
   // Adds the copies into the target, each element summing the threads in a fixed order.
-  void end() {  // host
+  // overwrite: sets the target to that sum instead, dropping its values from before the pass
+  // (the same bits as adding to a zeroed target), for a caller that would otherwise zero the
+  // target before every pass. Only duplicated sums can: plain and atomic ones add into the
+  // target during the pass, so their target must be zeroed (sums_are_duplicated says which).
+  void end(bool overwrite = false) {  // host
     if (mode != 1 || target.extent(0) == 0) return;
     const SumScatter<value_type, Device, mode> s = scatter;
     const int copies = s.ncopies;
@@ -175,7 +179,8 @@ struct ParticleSum {
         KOKKOS_LAMBDA(std::size_t e) {
           value_type sum = s.copies(e);
           for (int c = 1; c < copies; ++c) sum += s.copies(e + c * s.block);
-          s.target[e] += sum;
+          // overwrite: 0 + sum, the very operation of the add to a zeroed target
+          s.target[e] = (overwrite ? value_type(0) : s.target[e]) + sum;
         });
   }
   bool bound() const { return target.extent(0) > 0; }
@@ -195,9 +200,10 @@ struct ForceSums {
     force.begin();
     torque.begin();
   }  // host
-  void end() {
-    force.end();
-    torque.end();
+  // overwrite: the forces and torques are set to the pass's sums (ParticleSum::end)
+  void end(bool overwrite = false) {
+    force.end(overwrite);
+    torque.end(overwrite);
   }  // host
   // True when bound to these particles' views (false after the particle arrays were reallocated).
   bool bound_to(const Particles<T, Device>& p) const {
