@@ -11,8 +11,8 @@
 // velocity and angular velocity: they drift but are never kicked.
 // kick_drift fuses the closing half kick of one step with the opening half kick and drift of the
 // next (kick_dt = dt), the box deformation's remap of the positions, zeroes the consumed forces
-// (where the force pass does not overwrite them) and measures the displacement for the rebuild rule, all in one pass: 1 parallel region
-// instead of 6, which matters most on busy cores.
+// (where the force pass does not overwrite them) and measures the displacement for the rebuild
+// rule, all in one pass: 1 parallel region instead of 6, which matters most on busy cores.
 #include "driver/box_motion.hpp"
 
 #include <epac/core/vec3.hpp>
@@ -45,8 +45,10 @@ void half_kick(const Particles<T, Device>& p, const Kokkos::View<unsigned char*,
 }
 
 // v += kick_dt (F/m + g), omega += kick_dt torque/I (not for driven particles); force = torque
-// = 0 (unless !zero_forces: the next pass overwrites them, ForceSums::end(true)); x = remap(x) (a box deformation's affine map, when active) + dt v (in double). Returns max_i (|x_i - x_ref_i| + max(0, R_i - R_ref_i)), the rebuild
-// measure of ContactDetector (a non-finite position returns 1e30 so that the rebuild reports it).
+// = 0 (unless !zero_forces: the next pass overwrites them, ForceSums::end(true));
+// x = remap(x) + dt v in double (remap: a box deformation's affine map, when active).
+// Returns max_i (|x_i - x_ref_i| + max(0, R_i - R_ref_i)), the rebuild measure of
+// ContactDetector (a non-finite position returns 1e30 so that the rebuild reports it).
 template <class T, class Device>
 T kick_drift(const Particles<T, Device>& p, const Kokkos::View<unsigned char*, Device>& driven, const Vec3<T>& gravity,
              T kick_dt, typename Particles<T, Device>::position_type dt,
