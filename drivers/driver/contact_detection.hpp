@@ -137,6 +137,7 @@ ContactList<Device> find_pairs(const Particles<T, Device>& p, const CellList<T, 
           }
         });
       });
+  list.gid_ordered = true;  // the fill pass orients every pair by global id
   if (rows) *rows = offset;
   return list;
 }

@@ -348,6 +348,20 @@ TEMPLATE_LIST_TEST_CASE("a rebuild with spatial sorts carries the history over t
   REQUIRE(moved_again > 0);
 
   m.check();
+  // After the sorts indices no longer follow global ids, and the list is still oriented by them
+  // (the lanes kernel then skips its per-contact id test: ContactList::gid_ordered).
+  {
+    REQUIRE(det.pairs.gid_ordered);
+    REQUIRE(det.pairs.count > n);
+    const auto first = test::to_host(det.pairs.first);
+    const auto second = test::to_host(det.pairs.second);
+    int against_index = 0;  // pairs whose smaller id is at the larger index
+    for (int k = 0; k < det.pairs.count; ++k) {
+      CHECK(g2[first(k)] < g2[second(k)]);
+      against_index += first(k) > second(k);
+    }
+    CHECK(against_index > 0);
+  }
 
   // SortWhen::if_grid_changed (the driver's auto rule between sort intervals): on the grid of the
   // last sort no sort; on a spread packing (other cell counts) a sort; SortWhen::now always.

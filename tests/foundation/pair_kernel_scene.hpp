@@ -25,8 +25,13 @@ struct PairScene {
 
 // The dense packing (face neighbours overlap) plus its xy-diagonal neighbours (apart: 2.69 R
 // against 2 R), global ids shuffled, materials mixed, one pair of coincident centres.
+// periodic: the packing fills a box periodic on all three axes (one spacing per sphere), and the
+// faces' spheres are also listed with the opposite faces' (they touch only through the minimum
+// image, with separations of either sign on each axis).
+// gid_ordered: each pair listed with its smaller global id first, and the list says so
+// (ContactList::gid_ordered, the driver's lists).
 template <class T, class D>
-PairScene<T, D> pair_scene(double speed, int nmat = 1) {
+PairScene<T, D> pair_scene(double speed, int nmat = 1, bool periodic = false, bool gid_ordered = false) {
   const int n_side = 9;
   auto pk = bench::make_dense_packing<T, D>(n_side);
   std::mt19937 rng(11);
@@ -65,9 +70,35 @@ PairScene<T, D> pair_scene(double speed, int nmat = 1) {
         fi.push_back(idx(a, b, c));
         fj.push_back(idx(a + 1, b + 1, c));
       }
+  if (periodic) {
+    // the lattice spacing along each axis from the packing's extent; the box: one spacing per sphere
+    for (int d = 0; d < 3; ++d) {
+      double lo = x(0, d), hi = x(0, d);
+      for (int i = 2; i < n; ++i) {  // 1 sits on 0 (the coincident pair)
+        lo = std::min(lo, double(x(i, d)));
+        hi = std::max(hi, double(x(i, d)));
+      }
+      const double spacing = (hi - lo) / (n_side - 1);
+      pk.particles.box.lo[d] = lo - 0.5 * spacing;
+      pk.particles.box.length[d] = n_side * spacing;
+    }
+    for (int b = 0; b < n_side; b += 2)
+      for (int c = 2; c < n_side; c += 3) {  // c = 2: not the coincident sphere 1 = idx(0, 0, 1)
+        fi.push_back(idx(0, b, c));          // across the faces of each index, in both list orders
+        fj.push_back(idx(n_side - 1, b, c));
+        fi.push_back(idx(b, n_side - 1, c));
+        fj.push_back(idx(b, 0, c));
+        fi.push_back(idx(c, b, 0));
+        fj.push_back(idx(c, b, n_side - 1));
+      }
+  }
   fi.push_back(5);  // one more: no multiple of 8
   fj.push_back(idx(1, 1, 0));
+  if (gid_ordered)
+    for (std::size_t k = 0; k < fi.size(); ++k)
+      if (gid(fj[k]) < gid(fi[k])) std::swap(fi[k], fj[k]);
   PairScene<T, D> s{pk.particles, ContactList<D>(static_cast<int>(fi.size()))};
+  s.c.gid_ordered = gid_ordered;
   auto hf = Kokkos::create_mirror_view(s.c.first);
   auto hs = Kokkos::create_mirror_view(s.c.second);
   for (std::size_t k = 0; k < fi.size(); ++k) {
@@ -106,8 +137,9 @@ struct PassResult {
 // history_start: every history field's value before the first pass (0: fresh contacts; another
 // value: springs the separated entries must forget).
 template <class Model, class T, class D, class Kernel>
-PassResult run_passes(const Model& model, double speed, Kernel kernel, double history_start = 0.0) {
-  auto s = pair_scene<T, D>(speed, model.nmat);
+PassResult run_passes(const Model& model, double speed, Kernel kernel, double history_start = 0.0,
+                      bool periodic = false, bool gid_ordered = false) {
+  auto s = pair_scene<T, D>(speed, model.nmat, periodic, gid_ordered);
   ContactHistory<T, D> h(s.c.count, Model::history_size);
   if (history_start != 0.0 && h.data.span() > 0) Kokkos::deep_copy(h.data, T(history_start));
   ContactOutputs<T, D> out{Kokkos::View<T*, D>("fn", s.c.count), Kokkos::View<T*, D>("delta", s.c.count)};

@@ -57,10 +57,10 @@ void check_forms_agree(const FormResults& r, double rel) {
 }
 
 template <class Model, class T, class D>
-void compare_forms(const Model& model, double speed) {
+void compare_forms(const Model& model, double speed, bool periodic = false, bool gid_ordered = false) {
   const double rel = std::is_same<T, float>::value ? 2e-5 : 1e-12;
-  const FormResults r =
-      run_forms<Model, T, D>([&](auto kernel) { return run_passes<Model, T, D>(model, speed, kernel); });
+  const FormResults r = run_forms<Model, T, D>(
+      [&](auto kernel) { return run_passes<Model, T, D>(model, speed, kernel, 0.0, periodic, gid_ordered); });
   const PassResult& scalar = r.scalar;
   // the scene has both touching and separated contacts, and real forces and torques
   const auto touching = std::count_if(scalar.overlap.begin(), scalar.overlap.end(), [](double d) { return d > 0; });
@@ -68,6 +68,14 @@ void compare_forms(const Model& model, double speed) {
   REQUIRE(touching < static_cast<long>(scalar.overlap.size()) - 100);
   REQUIRE(max_abs(scalar.force) > 0);
   if (Model::effects::friction) REQUIRE(max_abs(scalar.torque) > 0);
+  if (periodic) {  // the pairs across the box's faces (listed before the last entry) touch as
+                   // face neighbours do (most of them: radii +-5% about half the spacing)
+    const int open = pair_scene<T, D>(speed, model.nmat).c.count;
+    const int cross = static_cast<int>(scalar.overlap.size()) - open;
+    REQUIRE(cross >= 40);
+    const auto at = scalar.overlap.begin() + (open - 1);
+    REQUIRE(std::count_if(at, at + cross, [](double d) { return d > 0; }) > cross / 2);
+  }
   check_forms_agree(r, rel);
 }
 
@@ -86,6 +94,14 @@ TEMPLATE_LIST_TEST_CASE("contacts in lanes give the one-contact kernel's results
       SECTION("Hertz-Mindlin, friction and damping") {
         compare_forms<HertzMindlin<T, Effects<kFriction | kDamping>, D>, T, D>(
             HertzMindlin<T, Effects<kFriction | kDamping>, D>::create(pair_materials<T>(mu)), speed);
+      }
+      SECTION("Hertz-Mindlin in a periodic box (contacts through the minimum image)") {
+        compare_forms<HertzMindlin<T, Effects<kFriction | kDamping>, D>, T, D>(
+            HertzMindlin<T, Effects<kFriction | kDamping>, D>::create(pair_materials<T>(mu)), speed, true);
+      }
+      SECTION("Hertz-Mindlin, a list ordered by global id (no id test in the lanes)") {
+        compare_forms<HertzMindlin<T, Effects<kFriction | kDamping>, D>, T, D>(
+            HertzMindlin<T, Effects<kFriction | kDamping>, D>::create(pair_materials<T>(mu)), speed, false, true);
       }
       SECTION("Hertz alone") {
         compare_forms<HertzMindlin<T, Effects<0>, D>, T, D>(

@@ -14,9 +14,10 @@
 //
 // One work item takes a block of W contacts (core/simd_lanes.hpp: 8 on host backends that
 // vectorise the block, 1 on GPUs, where this is one thread per contact). Five stages per block:
-//   1. gather (scalar): the list entries, both particles' state and the history into lane arrays;
-//   2. the common path (one loop over the lanes, vectorised by the host compiler): geometry, the
-//      law, damping and the sticking spring, with selects in place of tests;
+//   1. gather (no branch: the host compiler vectorises its index work): the list entries, both
+//      particles' state and the history into lane arrays;
+//   2. the common path (one loop over the lanes, vectorised by the host compiler): the minimum
+//      image, geometry, the law, damping and the sticking spring, with selects in place of tests;
 //   3. the law's rare lanes (scalar, laws with normal history): the one-contact kernel's
 //      finish_contact, which stores and adds that contact itself;
 //   4. Coulomb sliding (scalar), only for the lanes that slide;
@@ -139,6 +140,7 @@ void pair_kernel_lanes(const Model& model, const Particles<T, Device>& p, const 
   const auto tsum = sums.torque.scatter;
   const auto first = c.first;
   const auto second = c.second;
+  const bool by_gid = friction && !c.gid_ordered;  // the history's frame from the ids, per contact
   const auto conv = contact_conventions<Model>::of(model);
   const ContactForceBuffer<T, Device> nobuf{};  // the rare lanes add into the sums, as the lanes
   const auto hdata = h.data;
@@ -165,16 +167,22 @@ void pair_kernel_lanes(const Model& model, const Particles<T, Device>& p, const 
         //    arithmetic, nothing stored)
         for (int l = 0; l < W; ++l) {
           const int k = k0 + (l < lanes ? l : 0);
-          int i = first(k), j = second(k);
-          if (friction && p.gid(j) < p.gid(i)) {  // history in the frame of the smaller global id
-            const int t = i;
-            i = j;
-            j = t;
+          L_i[l] = first(k);
+          L_j[l] = second(k);
+        }
+        // history in the frame of the smaller global id: swapped by selects, in a loop of its own
+        // (no branch in a loop: they vectorise); a list ordered by ids needs neither test nor loads
+        if (by_gid)
+          for (int l = 0; l < W; ++l) {
+            const int a = L_i[l], e = L_j[l];
+            const int swap = -int(p.gid(e) < p.gid(a));
+            L_i[l] = (a & ~swap) | (e & swap);
+            L_j[l] = (e & ~swap) | (a & swap);
           }
-          L_i[l] = i;
-          L_j[l] = j;
-          Vec3<double> d = load3(p.x, i) - load3(p.x, j);
-          if (p.box.periodic()) d = p.box.minimum_image(d);
+        for (int l = 0; l < W; ++l) {
+          const int k = k0 + (l < lanes ? l : 0);
+          const int i = L_i[l], j = L_j[l];
+          const Vec3<double> d = load3(p.x, i) - load3(p.x, j);  // its minimum image: in stage 2
           L_dx[l] = d.x;
           L_dy[l] = d.y;
           L_dz[l] = d.z;
@@ -200,7 +208,12 @@ void pair_kernel_lanes(const Model& model, const Particles<T, Device>& p, const 
         }
         // 2. the common path, vectorised on host backends
         const Pair pair = model.lane_pair(0);  // one material
+        const auto box = p.box;                // periodic axes: the minimum image by selects (no branch: the
+                                               // gather loop above vectorises); open axes have length 0
         for (int l = 0; l < W; ++l) {
+          L_dx[l] = box.image_select(L_dx[l], box.length.x);
+          L_dy[l] = box.image_select(L_dy[l], box.length.y);
+          L_dz[l] = box.image_select(L_dz[l], box.length.z);
           const double dist = math::sqrt(L_dx[l] * L_dx[l] + L_dy[l] * L_dy[l] + L_dz[l] * L_dz[l]);
           // coincident centres have no normal: x, as pair_geometry_exact (the 1 keeps 1/dist finite)
           const bool apart = dist > 0.0;

@@ -13,6 +13,10 @@ struct ContactList {
   int count = 0;
   Kokkos::View<int*, Device> first;   // particle index i
   Kokkos::View<int*, Device> second;  // particle index j, or wall index for wall contacts
+  // Pairs only: true when every entry has gid(first) < gid(second), the frame of the pair's
+  // history (the driver's pair search lists pairs so); a kernel may then skip the global-id test
+  // per contact. A list copied from elsewhere (a host code's neighbour list) leaves it false.
+  bool gid_ordered = false;
 
   ContactList() = default;
   explicit ContactList(int capacity, const std::string& label = "contacts")  // host

@@ -5,6 +5,7 @@
 // shift gives the minimum image: no division, no rounding call on the hot path. The image is
 // the right one while every interaction distance is below L/2 (the host checks it).
 // Affine deformation (LAMMPS `fix deform ... remap x`) only changes `length` between passes.
+#include <epac/core/simd_lanes.hpp>
 #include <epac/core/vec3.hpp>
 
 namespace epac {
@@ -20,6 +21,13 @@ struct PeriodicBox {
   KOKKOS_FORCEINLINE_FUNCTION static T image(T s, T L) {
     const T h = T(0.5) * L;
     return s > h ? s - L : (s < -h ? s + L : s);
+  }
+  // image() as bit selects, for contacts in lanes (compute/pair_lanes.hpp): the same result bits,
+  // no branch; with L = 0 (an open axis) s itself (s - 0 and s + 0 are s), so it needs no test
+  // of the axis either.
+  KOKKOS_FORCEINLINE_FUNCTION static T image_select(T s, T L) {
+    const T h = T(0.5) * L;
+    return lane_select(s > h, s - L, lane_select(s < -h, s + L, s));
   }
   KOKKOS_FORCEINLINE_FUNCTION Vec3<T> minimum_image(const Vec3<T>& d) const {
     return Vec3<T>(length.x > T(0) ? image(d.x, length.x) : d.x, length.y > T(0) ? image(d.y, length.y) : d.y,
