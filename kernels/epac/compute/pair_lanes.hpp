@@ -208,8 +208,9 @@ void pair_kernel_lanes(const Model& model, const Particles<T, Device>& p, const 
         }
         // 2. the common path, vectorised on host backends
         const Pair pair = model.lane_pair(0);  // one material
-        const auto box = p.box;                // periodic axes: the minimum image by selects (no branch: the
-                                               // gather loop above vectorises); open axes have length 0
+        // periodic axes: the minimum image by selects (no branch, so the gather loop above
+        // vectorises); open axes have length 0
+        const auto box = p.box;
         for (int l = 0; l < W; ++l) {
           L_dx[l] = box.image_select(L_dx[l], box.length.x);
           L_dy[l] = box.image_select(L_dy[l], box.length.y);
