@@ -175,9 +175,9 @@ void pair_kernel_lanes(const Model& model, const Particles<T, Device>& p, const 
         if (by_gid)
           for (int l = 0; l < W; ++l) {
             const int a = L_i[l], e = L_j[l];
-            const int swap = -int(p.gid(e) < p.gid(a));
-            L_i[l] = (a & ~swap) | (e & swap);
-            L_j[l] = (e & ~swap) | (a & swap);
+            const bool swap = p.gid(e) < p.gid(a);
+            L_i[l] = lane_select(swap, e, a);
+            L_j[l] = lane_select(swap, a, e);
           }
         for (int l = 0; l < W; ++l) {
           const int k = k0 + (l < lanes ? l : 0);

@@ -37,7 +37,7 @@ struct contact_lanes
 template <class T>
 KOKKOS_FORCEINLINE_FUNCTION T lane_select(bool c, T a, T b) {
   using U = std::conditional_t<sizeof(T) == 8, std::uint64_t, std::uint32_t>;
-  static_assert(sizeof(T) == sizeof(U), "lane_select: float or double");
+  static_assert(sizeof(T) == sizeof(U), "lane_select: a 4- or 8-byte type (float, double, int)");
   U ua, ub;
   memcpy(&ua, &a, sizeof(T));
   memcpy(&ub, &b, sizeof(T));
