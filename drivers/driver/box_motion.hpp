@@ -72,6 +72,19 @@ class BoxMotion {
         });
   }
 
+  // The affine map from a box of edges `then` to the current one: the composition of the remaps
+  // since then. Inactive where no edge changed.
+  AffineRemap<P> map_since(const std::array<double, 3>& then) const {
+    AffineRemap<P> map;
+    if (!spec_.enabled || !spec_.deform) return map;
+    for (int d = 0; d < 3; ++d) {
+      map.ratio[d] = P(edge_[d] / then[d]);  // edges > 0 (host validation)
+      map.centre[d] = P(spec_.centre(d));
+      if (edge_[d] != then[d]) map.active = true;
+    }
+    return map;
+  }
+
   // Deforms the box to its edges at `step` (p.box included) and returns the affine map of the
   // positions (remap x), which the caller applies: the driver's kick_drift, in the pass that
   // drifts them, instead of a pass of its own. Inactive when nothing changed.

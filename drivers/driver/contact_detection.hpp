@@ -11,6 +11,9 @@
 // build, d_w a wall's displacement along its normal. So the lists stay complete while
 // max_i (d_i + g_i) <= skin/2 and max_w d_w <= skin/2; ContactDetector::update rebuilds when
 // either exceeds it. Growing radii (MDR) thus eat into the same margin.
+// In a box deformed affinely since the build (the driver's [box.deform], remap x) d may be
+// measured from the reference positions mapped by that deformation, at a smaller allowance:
+// ContactDetector::shift_allowance. Only the motion relative to the deformation then counts.
 // Distances and the reference positions are double whatever T (positions are, state/particles.hpp).
 #include "driver/cell_list.hpp"
 
@@ -276,7 +279,8 @@ class ContactDetector {
   enum class SortWhen { now, if_grid_changed };
   bool detect(const Particles<T, Device>& p, const Walls<T, Device>& w, const sort_callback* on_sort = nullptr,
               SortWhen when = SortWhen::now) {
-    CellList<T, Device> cells = build_cell_list(p, T(2) * max_radius(p) + skin_);
+    r_max_build_ = max_radius(p);
+    CellList<T, Device> cells = build_cell_list(p, T(2) * r_max_build_ + skin_);
     const bool grid_changed = cells.nx != sort_grid_[0] || cells.ny != sort_grid_[1] || cells.nz != sort_grid_[2];
     const bool sort = on_sort && *on_sort && (when == SortWhen::now || grid_changed);
     if (sort) {
@@ -388,10 +392,24 @@ class ContactDetector {
     const T half = T(0.5) * skin_;
     return particle_shift(p) > half || wall_shift(w) > half;
   }
-  // The same rule from shifts measured elsewhere (the driver's fused integration kernel).
-  bool needs_rebuild(T particle_shift_value, T wall_shift_value) const {
-    const T half = T(0.5) * skin_;
-    return builds == 0 || particle_shift_value > half || wall_shift_value > half;
+  // The same rule from shifts measured elsewhere (the driver's fused integration kernel), the
+  // particles' from their reference positions mapped by an affine deformation of least ratio
+  // `lambda` since the build (1: none; shift_allowance).
+  bool needs_rebuild(T particle_shift_value, T wall_shift_value, double lambda = 1.0) const {
+    return builds == 0 || particle_shift_value > shift_allowance(lambda) || wall_shift_value > T(0.5) * skin_;
+  }
+  // The particles' allowed shift, measured beyond an affine deformation since the build whose
+  // ratios along the axes are >= lambda. A pair missing from the list was at least
+  // R_i + R_j + skin apart in every periodic image; the deformation scales each separation by at
+  // least min(1, lambda) = l, so the pair is still at least l (R_i + R_j + skin) - s_i - s_j
+  // apart, with s the shift beyond it (growth included, as above). It cannot touch while
+  // s_i + s_j <= l skin - (1 - l) (R_i + R_j): max s <= (l skin - (1 - l) 2 R_max) / 2 with R_max
+  // at the build. skin/2 without a deformation (l = 1); below 0 (every step rebuilds) once the
+  // compression since the build exceeds skin / (skin + 2 R_max). The allowance is computed in
+  // double: its round-off is that of the shift's, as without a deformation.
+  T shift_allowance(double lambda) const {
+    const double l = lambda < 1.0 ? lambda : 1.0;
+    return T(0.5 * (l * double(skin_) - (1.0 - l) * 2.0 * double(r_max_build_)));
   }
   // Positions and radii at the last build (the reference of particle_shift).
   const position_view& reference_positions() const { return x_build_; }
@@ -407,6 +425,7 @@ class ContactDetector {
  private:
   using exec = typename Device::execution_space;
   T skin_ = T(0);
+  T r_max_build_ = T(0);  // the largest radius at the last build (shift_allowance)
   int pair_fields_ = 0, wall_fields_ = 0;
   position_view x_build_, wall_build_;
   Kokkos::View<T*, Device> r_build_;

@@ -194,6 +194,7 @@ class SceneRun {
       last_sort_step_ = step;
       ++sorts_;
     }
+    edge_at_build_ = box_.edge();
   }
 
   // Every per-particle array follows the cell order (a sorting detection).
@@ -241,7 +242,7 @@ class SceneRun {
     if (deterministic_)
       det_pass_.begin(model_);
     else
-      sums_.begin();
+      sums_.begin(overwrite_forces_);
     compute_pair_forces(model_, p_, det_.pairs, det_.pair_history, step_dt, sums_, with_outputs ? pair_out_ : none,
                         det_pass_.pair_buffer);
     if (nw_ > 0)
@@ -342,7 +343,7 @@ class SceneRun {
         window_start_ = clock::now();
       }
       const T shift = advance(step);
-      if (det_.needs_rebuild(shift, T(wall_driver_->max_shift_since_build()))) {
+      if (det_.needs_rebuild(shift, T(wall_driver_->max_shift_since_build()), lambda_since_build_)) {
         if (diverged(step)) break;  // before the cell list meets a non-finite coordinate
         rebuild_contacts(step);
       }
@@ -368,13 +369,21 @@ class SceneRun {
   // particles' shift for the rebuild rule.
   T advance(std::int64_t step) {
     driven_motion_->advance(p_, (step - 1) * scene_.run.dt, scene_.run.dt);
-    // [box.deform] remap x, before the drift (in kick_drift's pass): the rebuild measure below
-    // sees it as displacement
+    // [box.deform] remap x, before the drift (in kick_drift's pass)
     const auto remap = box_.deform_to(p_, step);
+    // The rebuild rule counts only the motion beyond the deformation since the last build
+    // (ContactDetector::shift_allowance): in an isotropic compression the lists then last until
+    // the compression, not each particle's affine drift, uses up the skin. Not with walls: the
+    // deformation moves the particles, not the walls.
+    const auto since =
+        nw_ == 0 ? box_.map_since(edge_at_build_) : AffineRemap<typename Particles<T, Device>::position_type>{};
+    lambda_since_build_ = 1.0;
+    if (since.active)
+      for (int d = 0; d < 3; ++d) lambda_since_build_ = std::min(lambda_since_build_, double(since.ratio[d]));
     // closing half kick of the previous step (if deferred) + opening half kick + drift
     // the drift in double with the scene's dt (positions are double, state/particles.hpp)
     const T shift = kick_drift(p_, driven_, g_, full_step_velocities_ ? half_dt_ : dt_, scene_.run.dt,
-                               det_.reference_positions(), det_.reference_radii(), remap, !overwrite_forces_);
+                               det_.reference_positions(), det_.reference_radii(), remap, since, !overwrite_forces_);
     wall_driver_->advance((step - 1) * scene_.run.dt, scene_.run.dt);
     phases_.lap(Phase::integration);
     return shift;
@@ -492,6 +501,8 @@ class SceneRun {
   const T dt_, half_dt_;
   int nw_ = 0;
   BoxMotion<T, Device> box_;
+  std::array<double, 3> edge_at_build_{0, 0, 0};  // the box at the last build (the rebuild rule)
+  double lambda_since_build_ = 1.0;               // the least edge ratio since then
   // contacts and forces (build_contacts)
   ContactDetector<T, Device> det_;
   typename ContactDetector<T, Device>::sort_callback on_sort_;

@@ -267,6 +267,38 @@ TEMPLATE_LIST_TEST_CASE("the lists are rebuilt when the skin is used up", "[driv
   CHECK(det.builds == 3);
 }
 
+TEMPLATE_LIST_TEST_CASE("the allowance for shifts measured beyond an affine compression", "[driver][detection]",
+                        test::Backends) {
+  using D = TestType;
+  const HostPacking h = random_packing(500, 1e-3, 1e-3, 3);  // radii 1 mm
+  const double skin = 2e-4;
+  auto p = to_device<D>(h);
+  auto w = box_walls<D>(0.01);
+  ContactDetector<double, D> det(skin, 3, 3);
+  det.build(p, w);
+  // no deformation, or an expansion (separations only grow): skin / 2
+  CHECK(det.shift_allowance(1.0) == 0.5 * skin);
+  CHECK(det.shift_allowance(1.3) == 0.5 * skin);
+  // (l skin - (1 - l) 2 R_max) / 2 with R_max = 1 mm
+  const double l = 0.97;
+  const double expected = 0.5 * (l * skin - (1.0 - l) * 2.0 * 1e-3);
+  CHECK(det.shift_allowance(l) == Approx(expected).epsilon(1e-14));
+  // two spheres at the list's edge (R_i + R_j + skin apart), brought together by the compression
+  // and each by the allowance towards the other, just touch: the allowance is the exact bound
+  const double gap = l * (2e-3 + skin) - 2.0 * det.shift_allowance(l);
+  CHECK(gap == Approx(2e-3).epsilon(1e-12));
+  CHECK(det.needs_rebuild(0.99 * expected, 0.0, l) == false);
+  CHECK(det.needs_rebuild(1.01 * expected, 0.0, l) == true);
+  // the skin used up by the compression alone (1 - l > skin / (skin + 2 R_max)): every step
+  const double l_edge = 1.0 - skin / (skin + 2e-3);
+  CHECK(std::fabs(det.shift_allowance(l_edge)) < 1e-18);
+  CHECK(det.shift_allowance(l_edge - 1e-3) < 0.0);
+  CHECK(det.needs_rebuild(0.0, 0.0, l_edge - 1e-3));
+  // walls keep skin / 2
+  CHECK(det.needs_rebuild(0.0, 0.51 * skin, 1.0));
+  CHECK_FALSE(det.needs_rebuild(0.0, 0.49 * skin, 1.0));
+}
+
 namespace {
 // A packing whose lists were built and each contact's history tagged with its identity
 // (tag_history, as a model would store state), then every particle moved by up to 2 skins:

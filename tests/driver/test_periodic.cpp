@@ -16,8 +16,9 @@
 #include "driver/spatial_sort.hpp"
 #include "driver_test_util.hpp"
 
-#include <cstdio>
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <random>
 #include <set>
 #include <tuple>
@@ -522,6 +523,85 @@ void check_same_particles(const std::filesystem::path& a, const std::filesystem:
   }
 }
 }  // namespace
+
+// The rebuild rule in a compressing box counts only the motion beyond the deformation
+// (ContactDetector::shift_allowance): the same run as with lists rebuilt at every step (a skin
+// of 1e-8 m, which the compression uses up at once: every step rebuilds), with fewer rebuilds
+// than one per skin/2 of affine drift (150 with the plain rule, measured 2026-12-05). The skin,
+// 2e-5 m, is below the lattice's initial gaps (up to 1.2e-4 m): the contacts that form need
+// rebuilds, so a rule that rebuilt too late would miss some (an allowance without the
+// compression's term, l skin / 2, rebuilt 5 times and had 10 contacts at step 50 instead of 931).
+TEST_CASE("box deformation: the lists last until the compression uses up the skin", "[driver][periodic][deform]") {
+  auto scene = [](const std::string& skin) {
+    return kBead + R"(
+[box]
+lo = [0.0, 0.0, 0.0]
+hi = [0.016970562748477142, 0.016970562748477142, 0.016970562748477142]
+periodic = [true, true, true]
+
+[box.deform]
+scale = [0.85, 0.85, 0.85]
+steps = 300
+
+[particles.lattice]
+type = "fcc"
+a = 2.8284271247461903e-3
+cells = [6, 6, 6]
+radius_min = 0.94e-3
+radius_max = 0.99e-3
+jitter = 5.0e-6
+material = "bead"
+seed = 4711
+
+[run]
+dt = 2.0e-6
+steps = 400
+output_interval = 50
+particle_output = true
+skin = )" + skin +
+           "\n";
+  };
+  const auto d1 = test::fresh_out_dir("deform_rule");
+  const auto d2 = test::fresh_out_dir("deform_every_step");
+  const auto s1 = run_text(scene("2.0e-5"), d1);
+  const auto s2 = run_text(scene("1.0e-8"), d2);
+  // 15% compression, the skin's 2e-5 / (2e-5 + 2 R_max) = 1% used up by each 1% (22 measured)
+  CHECK(s1.rebuilds >= 15);
+  CHECK(s1.rebuilds <= 40);
+  CHECK(s2.rebuilds == 400);
+  CHECK(s1.contacts_mean > 1000.0);  // compressed into contact
+  const auto t1 = test::read_csv_columns(d1 / "timeseries.csv");
+  const auto t2 = test::read_csv_columns(d2 / "timeseries.csv");
+  REQUIRE(t1.at("step").size() == 9);
+  REQUIRE(t2.at("step").size() == 9);
+  for (std::size_t k = 0; k < 9; ++k) {
+    CHECK(t1.at("pair_contacts")[k] == t2.at("pair_contacts")[k]);
+    // round-off apart (other lists: the sums run in another order)
+    CHECK(t1.at("ke_translational")[k] == Approx(t2.at("ke_translational")[k]).epsilon(1e-6).margin(1e-15));
+  }
+  // positions by minimum image (the two runs wrap at other steps), velocities as they are
+  const auto ra = csv_rows(d1 / "particles.csv");
+  const auto rb = csv_rows(d2 / "particles.csv");
+  REQUIRE(ra.size() == rb.size());
+  REQUIRE(ra.size() == 9u * 864u);  // 6^3 fcc cells of 4 spheres, 9 samples
+  int differ = 0;
+  double worst = 0.0;
+  for (std::size_t k = 0; k < ra.size(); ++k) {
+    REQUIRE(ra[k][2] == rb[k][2]);  // id
+    const double L = 0.016970562748477142 * (1.0 - 0.15 * std::min(ra[k][0], 300.0) / 300.0);
+    for (int c = 3; c < 9; ++c) {
+      double d = ra[k][c] - rb[k][c];
+      if (c < 6) d -= L * std::round(d / L);
+      const double scale = c < 6 ? L : std::max(std::fabs(ra[k][c]), 1e-9);
+      worst = std::max(worst, std::fabs(d) / scale);
+      differ += std::fabs(d) > 1e-9 * scale;
+    }
+  }
+  CAPTURE(worst);
+  CHECK(differ == 0);
+  std::filesystem::remove_all(d1);
+  std::filesystem::remove_all(d2);
+}
 
 TEST_CASE("spatial sort at rebuilds: the same run, outputs in global-id order", "[driver][sort]") {
   SECTION("hertz_mindlin, walls, a driven sphere with a motion") {

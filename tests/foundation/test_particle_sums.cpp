@@ -13,16 +13,12 @@ using namespace epac;
 namespace {
 using HostVec = Kokkos::View<double* [3], Kokkos::LayoutLeft, Kokkos::HostSpace>;
 
-// Forces and torques preset to `before`; then one pass of 3 n contributions: particle i gets
-// (i + 1) (1, 2, 3) three times in force and the negative in torque. Returns both after
-// end(overwrite).
+// One pass through `sums`: particle i gets (i + 1) (1, 2, 3) three times in force and the
+// negative in torque, between begin(overwrite) and end(overwrite). A named function: nvcc's
+// extended lambdas cannot be defined inside another lambda.
 template <class D>
-std::pair<HostVec, HostVec> pass(int n, double before, bool overwrite) {
-  Particles<double, D> p(n);
-  Kokkos::deep_copy(p.force, before);
-  Kokkos::deep_copy(p.torque, before);
-  ForceSums<double, D> sums(p);
-  sums.begin();
+void add_pass(ForceSums<double, D>& sums, int n, bool overwrite) {
+  sums.begin(overwrite);
   const auto fs = sums.force.scatter;
   const auto ts = sums.torque.scatter;
   Kokkos::parallel_for(
@@ -33,6 +29,16 @@ std::pair<HostVec, HostVec> pass(int n, double before, bool overwrite) {
         scatter_add3(ts.access(), i, -1.0 * v);
       });
   sums.end(overwrite);
+}
+
+// Forces and torques preset to `before`, then one add_pass; returns both.
+template <class D>
+std::pair<HostVec, HostVec> pass(int n, double before, bool overwrite) {
+  Particles<double, D> p(n);
+  Kokkos::deep_copy(p.force, before);
+  Kokkos::deep_copy(p.torque, before);
+  ForceSums<double, D> sums(p);
+  add_pass(sums, n, overwrite);
   return {Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.force),
           Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.torque)};
 }
@@ -63,4 +69,41 @@ TEMPLATE_LIST_TEST_CASE("particle sums: end() adds the pass to the forces, end(t
   for (int i = 0; i < n; ++i)
     for (int d = 0; d < 3; ++d) differ += (a.first(i, d) != b.first(i, d)) + (a.second(i, d) != b.second(i, d));
   CHECK(differ == 0);
+}
+
+// One thread (the ctest particle_sums_one_thread runs this file's [sums] cases with
+// OMP_NUM_THREADS=1): the per-thread sums have a single copy, and begin(true) lets the pass add
+// into the forces themselves (no copy to clear or to add up). The same ForceSums then runs an
+// adding pass, which must use its own copy again.
+TEMPLATE_LIST_TEST_CASE("particle sums: a single copy's overwrite pass adds into the forces, the next pass adds",
+                        "[foundation][sums]", test::Backends) {
+  using D = TestType;
+  using exec = typename D::execution_space;
+  const int n = 257;
+  const bool duplicated = sums_are_duplicated<D>();
+  Particles<double, D> p(n);
+  Kokkos::deep_copy(p.force, 5.0);
+  Kokkos::deep_copy(p.torque, 5.0);
+  ForceSums<double, D> sums(p);
+  auto one_pass = [&](bool overwrite) { add_pass(sums, n, overwrite); };
+  auto wrong = [&](double base, double times) {
+    auto f = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.force);
+    auto t = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.torque);
+    int bad = 0;
+    for (int i = 0; i < n; ++i)
+      for (int d = 0; d < 3; ++d) {
+        bad += f(i, d) != base + times * 3.0 * (d + 1) * (i + 1);
+        bad += t(i, d) != base - times * 3.0 * (d + 1) * (i + 1);
+      }
+    return bad;
+  };
+  one_pass(true);
+  CAPTURE(duplicated, exec().concurrency());
+  CHECK(sums.force.direct == (duplicated && exec().concurrency() == 1));
+  CHECK(wrong(duplicated ? 0.0 : 5.0, 1.0) == 0);
+  one_pass(false);  // adds the same again
+  CHECK_FALSE(sums.force.direct);
+  CHECK(wrong(duplicated ? 0.0 : 5.0, 2.0) == 0);
+  one_pass(true);  // and sets it again
+  CHECK(wrong(duplicated ? 0.0 : 5.0, duplicated ? 1.0 : 3.0) == 0);
 }

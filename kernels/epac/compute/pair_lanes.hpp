@@ -153,10 +153,6 @@ void pair_kernel_lanes(const Model& model, const Particles<T, Device>& p, const 
         const int k0 = b * W;
         const int lanes = count - k0 < W ? count - k0 : W;
         int L_i[W], L_j[W];
-        double L_dx[W], L_dy[W], L_dz[W];
-        T L_R_i[W], L_R_j[W], L_m_i[W], L_m_j[W];
-        T L_vx[W], L_vy[W], L_vz[W];
-        T L_wix[W], L_wiy[W], L_wiz[W], L_wjx[W], L_wjy[W], L_wjz[W];
         T L_hx[W], L_hy[W], L_hz[W];
         T L_nx[W], L_ny[W], L_nz[W], L_delta[W], L_fn[W];
         T L_ftx[W], L_fty[W], L_ftz[W], L_f_lim[W], L_ft2[W], L_k_t[W];
@@ -181,24 +177,6 @@ void pair_kernel_lanes(const Model& model, const Particles<T, Device>& p, const 
           }
         for (int l = 0; l < W; ++l) {
           const int k = k0 + (l < lanes ? l : 0);
-          const int i = L_i[l], j = L_j[l];
-          const Vec3<double> d = load3(p.x, i) - load3(p.x, j);  // its minimum image: in stage 2
-          L_dx[l] = d.x;
-          L_dy[l] = d.y;
-          L_dz[l] = d.z;
-          L_R_i[l] = p.radius(i);
-          L_R_j[l] = p.radius(j);
-          L_m_i[l] = p.mass(i);
-          L_m_j[l] = p.mass(j);
-          L_vx[l] = p.v(i, 0) - p.v(j, 0);
-          L_vy[l] = p.v(i, 1) - p.v(j, 1);
-          L_vz[l] = p.v(i, 2) - p.v(j, 2);
-          L_wix[l] = p.omega(i, 0);
-          L_wiy[l] = p.omega(i, 1);
-          L_wiz[l] = p.omega(i, 2);
-          L_wjx[l] = p.omega(j, 0);
-          L_wjy[l] = p.omega(j, 1);
-          L_wjz[l] = p.omega(j, 2);
           for (int f = 0; f < NH; ++f) L_nh[f][l] = hist[k + f * hstride];
           if (friction) {
             L_hx[l] = hist[k + NH * hstride];
@@ -206,29 +184,34 @@ void pair_kernel_lanes(const Model& model, const Particles<T, Device>& p, const 
             L_hz[l] = hist[k + (NH + 2) * hstride];
           }
         }
-        // 2. the common path, vectorised on host backends
+        // 2. the common path, vectorised on host backends. The particles' state is loaded here,
+        //    not copied into lane arrays first: the compiler turns these loads into vector gathers
+        //    (about 5% of the force pass against the copy, measured 2026-12-05)
         const Pair pair = model.lane_pair(0);  // one material
-        // periodic axes: the minimum image by selects (no branch, so the gather loop above
-        // vectorises); open axes have length 0
+        // periodic axes: the minimum image by selects (no branch, so this loop vectorises); open
+        // axes have length 0
         const auto box = p.box;
         for (int l = 0; l < W; ++l) {
-          L_dx[l] = box.image_select(L_dx[l], box.length.x);
-          L_dy[l] = box.image_select(L_dy[l], box.length.y);
-          L_dz[l] = box.image_select(L_dz[l], box.length.z);
-          const double dist = math::sqrt(L_dx[l] * L_dx[l] + L_dy[l] * L_dy[l] + L_dz[l] * L_dz[l]);
+          const int i = L_i[l], j = L_j[l];
+          const double dx = box.image_select(p.x(i, 0) - p.x(j, 0), box.length.x);
+          const double dy = box.image_select(p.x(i, 1) - p.x(j, 1), box.length.y);
+          const double dz = box.image_select(p.x(i, 2) - p.x(j, 2), box.length.z);
+          const T R_i = p.radius(i), R_j = p.radius(j), m_i = p.mass(i), m_j = p.mass(j);
+          const double dist = math::sqrt(dx * dx + dy * dy + dz * dz);
           // coincident centres have no normal: x, as pair_geometry_exact (the 1 keeps 1/dist finite)
           const bool apart = dist > 0.0;
           const double inv = 1.0 / lane_select(apart, dist, 1.0);
-          const Vec3<T> n(lane_select(apart, T(inv * L_dx[l]), T(1)), lane_select(apart, T(inv * L_dy[l]), T(0)),
-                          lane_select(apart, T(inv * L_dz[l]), T(0)));
-          const double delta = double(L_R_i[l]) + double(L_R_j[l]) - dist;
-          const T R_eff = L_R_i[l] * L_R_j[l] / (L_R_i[l] + L_R_j[l]);  // radii > 0 (host validation)
-          const T m_eff = L_m_i[l] * L_m_j[l] / (L_m_i[l] + L_m_j[l]);  // masses > 0 (host validation)
-          const double half = 0.5 * delta;                              // contact point: middle of the overlap zone
-          const T arm_i = T(double(L_R_i[l]) - half), arm_j = T(double(L_R_j[l]) - half);
-          const Vec3<T> w_arm =
-              arm_i * Vec3<T>(L_wix[l], L_wiy[l], L_wiz[l]) + arm_j * Vec3<T>(L_wjx[l], L_wjy[l], L_wjz[l]);
-          const Vec3<T> v_c = Vec3<T>(L_vx[l], L_vy[l], L_vz[l]) - cross(w_arm, n);
+          const Vec3<T> n(lane_select(apart, T(inv * dx), T(1)), lane_select(apart, T(inv * dy), T(0)),
+                          lane_select(apart, T(inv * dz), T(0)));
+          const double delta = double(R_i) + double(R_j) - dist;
+          const T R_eff = R_i * R_j / (R_i + R_j);  // radii > 0 (host validation)
+          const T m_eff = m_i * m_j / (m_i + m_j);  // masses > 0 (host validation)
+          const double half = 0.5 * delta;          // contact point: middle of the overlap zone
+          const T arm_i = T(double(R_i) - half), arm_j = T(double(R_j) - half);
+          const Vec3<T> w_arm = arm_i * Vec3<T>(p.omega(i, 0), p.omega(i, 1), p.omega(i, 2)) +
+                                arm_j * Vec3<T>(p.omega(j, 0), p.omega(j, 1), p.omega(j, 2));
+          const Vec3<T> v_rel(p.v(i, 0) - p.v(j, 0), p.v(i, 1) - p.v(j, 1), p.v(i, 2) - p.v(j, 2));
+          const Vec3<T> v_c = v_rel - cross(w_arm, n);
           const T vn = dot(v_c, n);
           History lh;
           for (int f = 0; f < NH; ++f) lh.v[f] = L_nh[f][l];

@@ -148,6 +148,8 @@ struct ParticleSum {
   static constexpr int mode = detail::sums_mode<typename Device::execution_space, Policy>::value;
   target_view target;
   SumScatter<value_type, Device, mode> scatter;
+  Kokkos::View<value_type*, Device> own_copies;  // the per-thread copies (scatter.copies unless direct)
+  bool direct = false;                           // this pass adds into the target itself (begin)
 
   ParticleSum() = default;
   explicit ParticleSum(const target_view& t) : target(t) {  // host
@@ -157,13 +159,28 @@ struct ParticleSum {
     scatter.block = scatter.stride * (comps - 1) + t.extent(0);
     scatter.ncopies = mode == 1 ? static_cast<int>(scatter.token.size()) : 0;
     if (mode == 1)
-      scatter.copies = Kokkos::View<value_type*, Device>(std::string("epac::sums.") + t.label(),  // host
-                                                         scatter.block * static_cast<std::size_t>(scatter.ncopies));
+      own_copies = Kokkos::View<value_type*, Device>(std::string("epac::sums.") + t.label(),  // host
+                                                     scatter.block * static_cast<std::size_t>(scatter.ncopies));
+    scatter.copies = own_copies;
   }
 
   // Clears the per-thread copies (the target keeps its values: the pass adds to them).
-  void begin() {  // host
-    if (mode == 1 && target.extent(0) > 0) Kokkos::deep_copy(scatter.copies, value_type(0));
+  // overwrite: the pass's end(true) will set the target to its sums. With a single copy (one
+  // thread) the pass then adds into the target itself, cleared here, and end() has nothing to
+  // do: no copy to clear and none to add up (the same bits as end(true)'s 0 + sum, but for the
+  // sign of a zero sum). begin(true) must be followed by end(true).
+  void begin(bool overwrite = false) {  // host
+    if (mode != 1 || target.extent(0) == 0) return;
+    direct = overwrite && own_copies.extent(0) == scatter.block;
+    if (direct) {
+      scatter.copies = Kokkos::View<value_type*, Device>(scatter.target, scatter.block);  // unmanaged: the target
+      scatter.ncopies = 0;  // take() reads the target only
+      Kokkos::deep_copy(scatter.copies, value_type(0));
+    } else {
+      scatter.copies = own_copies;
+      scatter.ncopies = static_cast<int>(own_copies.extent(0) / scatter.block);
+      Kokkos::deep_copy(scatter.copies, value_type(0));
+    }
   }
   // Adds the copies into the target, each element summing the threads in a fixed order.
   // overwrite: sets the target to that sum instead, dropping its values from before the pass
@@ -171,7 +188,7 @@ struct ParticleSum {
   // target before every pass. Only duplicated sums can: plain and atomic ones add into the
   // target during the pass, so their target must be zeroed (sums_are_duplicated says which).
   void end(bool overwrite = false) {  // host
-    if (mode != 1 || target.extent(0) == 0) return;
+    if (mode != 1 || target.extent(0) == 0 || direct) return;
     const SumScatter<value_type, Device, mode> s = scatter;
     const int copies = s.ncopies;
     Kokkos::parallel_for(
@@ -196,9 +213,10 @@ struct ForceSums {
   ForceSums() = default;
   explicit ForceSums(const Particles<T, Device>& p) : force(p.force), torque(p.torque) {}  // host
 
-  void begin() {
-    force.begin();
-    torque.begin();
+  // overwrite: end(true) follows (ParticleSum::begin)
+  void begin(bool overwrite = false) {
+    force.begin(overwrite);
+    torque.begin(overwrite);
   }  // host
   // overwrite: the forces and torques are set to the pass's sums (ParticleSum::end)
   void end(bool overwrite = false) {

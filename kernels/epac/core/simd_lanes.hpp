@@ -30,6 +30,13 @@ struct contact_lanes
           int, std::is_same<typename ExecutionSpace::memory_space, Kokkos::HostSpace>::value ? kContactLanesHost : 1> {
 };
 
+// Particles in lanes (the driver's integration, driver/integrator.hpp): the same width on host
+// backends, one particle per work item where contacts take no lanes and on GPUs.
+template <class ExecutionSpace>
+struct particle_lanes
+    : std::integral_constant<int,
+                             (contact_lanes<ExecutionSpace>::value > 1 ? contact_lanes<ExecutionSpace>::value : 1)> {};
+
 // c ? a : b as bit operations: a ternary is a branch to the compiler's middle end, and jump
 // threading then duplicates the code after it for each side, which leaves stores and divisions
 // on one path only (the vectoriser gives up: "control flow in loop"). Both operands are
