@@ -172,15 +172,10 @@ struct ParticleSum {
   void begin(bool overwrite = false) {  // host
     if (mode != 1 || target.extent(0) == 0) return;
     direct = overwrite && own_copies.extent(0) == scatter.block;
-    if (direct) {
-      scatter.copies = Kokkos::View<value_type*, Device>(scatter.target, scatter.block);  // unmanaged: the target
-      scatter.ncopies = 0;  // take() reads the target only
-      Kokkos::deep_copy(scatter.copies, value_type(0));
-    } else {
-      scatter.copies = own_copies;
-      scatter.ncopies = static_cast<int>(own_copies.extent(0) / scatter.block);
-      Kokkos::deep_copy(scatter.copies, value_type(0));
-    }
+    // direct: an unmanaged view of the target, and take() reads the target only
+    scatter.copies = direct ? Kokkos::View<value_type*, Device>(scatter.target, scatter.block) : own_copies;
+    scatter.ncopies = direct ? 0 : static_cast<int>(own_copies.extent(0) / scatter.block);
+    Kokkos::deep_copy(scatter.copies, value_type(0));
   }
   // Adds the copies into the target, each element summing the threads in a fixed order.
   // overwrite: sets the target to that sum instead, dropping its values from before the pass
