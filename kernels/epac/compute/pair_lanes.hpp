@@ -185,8 +185,8 @@ void pair_kernel_lanes(const Model& model, const Particles<T, Device>& p, const 
           }
         }
         // 2. the common path, vectorised on host backends. The particles' state is loaded here,
-        //    not copied into lane arrays first: the compiler turns these loads into vector gathers
-        //    (about 5% of the force pass against the copy, measured 2026-12-05)
+        //    not copied into lane arrays first: the compiler loads it straight into vector
+        //    registers (about 5% of the force pass against the copy, measured 2026-12-05)
         const Pair pair = model.lane_pair(0);  // one material
         // periodic axes: the minimum image by selects (no branch, so this loop vectorises); open
         // axes have length 0
