@@ -13,7 +13,9 @@
 // either exceeds it. Growing radii (MDR) thus eat into the same margin.
 // In a box deformed affinely since the build (the driver's [box.deform], remap x) d may be
 // measured from the reference positions mapped by that deformation, at a smaller allowance:
-// ContactDetector::shift_allowance. Only the motion relative to the deformation then counts.
+// ContactDetector::shift_allowance. Only the motion relative to the deformation then counts,
+// for wall contacts too where, as in the driver, the deformed axes are periodic and walls bound
+// only the others (the deformation then changes no particle's distance to a wall).
 // Distances and the reference positions are double whatever T (positions are, state/particles.hpp).
 #include "driver/cell_list.hpp"
 

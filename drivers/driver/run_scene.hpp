@@ -373,10 +373,12 @@ class SceneRun {
     const auto remap = box_.deform_to(p_, step);
     // The rebuild rule counts only the motion beyond the deformation since the last build
     // (ContactDetector::shift_allowance): in an isotropic compression the lists then last until
-    // the compression, not each particle's affine drift, uses up the skin. Not with walls: the
-    // deformation moves the particles, not the walls.
-    const auto since =
-        nw_ == 0 ? box_.map_since(edge_at_build_) : AffineRemap<typename Particles<T, Device>::position_type>{};
+    // the compression, not each particle's affine drift, uses up the skin. Walls too: the scene
+    // deforms only periodic axes and a wall's normal has no component along one (both validated,
+    // scene.cpp), so the deformation leaves every particle's distance to every wall unchanged,
+    // and a wall contact missing from the list stays at least R + skin - s - w away (s: the shift
+    // beyond the deformation, at most the allowance <= skin/2; w: the wall's, <= skin/2).
+    const auto since = box_.map_since(edge_at_build_);
     lambda_since_build_ = 1.0;
     if (since.active)
       for (int d = 0; d < 3; ++d) lambda_since_build_ = std::min(lambda_since_build_, double(since.ratio[d]));
