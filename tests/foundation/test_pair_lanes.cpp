@@ -175,10 +175,14 @@ namespace {
 // branch, detachment and re-loading after unloading.
 const double nan_schedule[] = {1.0, 1.0, 1.0, 1.035, 1.0, 0.995, 0.995, 0.9952, 0.9955, 0.996, 0.996};
 
-// Forces, torques and outputs of every pass, appended; the history after the last.
+// Forces, torques and outputs of every pass, appended; the history after the last. whole_blocks:
+// the list's last entries left out so that it fills blocks of 8 exactly (the scene's list ends in
+// a part-full block).
 template <class Model, class T, class D, class Kernel>
-PassResult run_schedule(const Model& model, Kernel kernel, std::vector<double>* history_before_last = nullptr) {
+PassResult run_schedule(const Model& model, Kernel kernel, std::vector<double>* history_before_last = nullptr,
+                        bool whole_blocks = false) {
   auto s = pair_scene<T, D>(1.0, model.nmat);
+  if (whole_blocks) s.c.count -= s.c.count % 8;
   auto x = Kokkos::create_mirror_view(s.p.x);  // on host backends: the positions themselves
   Kokkos::deep_copy(x, s.p.x);
   const std::vector<double> x0(x.data(), x.data() + x.span());
@@ -221,16 +225,20 @@ JkrPair<T> host_lane_pair(const Jkr<T, E, D>& m) {
 
 // A law with normal history in lanes against the one-contact kernel over the schedule, and the
 // lane form's own verdict on the last pass: both kinds of lane occur (>= 100 common, >= 10 rare)
-// and, where `pulling` is set, adhesive forces (all from rare lanes for Nan 2022).
+// and, where `pulling` is set, adhesive forces (all from rare lanes for Nan 2022). The last block of
+// the list is part full (it loads and stores the history lane by lane, full blocks as vectors),
+// unless whole_blocks.
 template <class Model, class T, class D>
-void compare_history_forms(const Model& model, bool pulling_expected) {
+void compare_history_forms(const Model& model, bool pulling_expected, bool whole_blocks = false) {
   const double rel = std::is_same<T, float>::value ? 2e-5 : 1e-12;
   REQUIRE(model.lane_form_applies());
   std::vector<double> h_last;  // the one-contact kernel's (the first run), before its last pass
-  const FormResults r = run_forms<Model, T, D>(
-      [&](auto kernel) { return run_schedule<Model, T, D>(model, kernel, h_last.empty() ? &h_last : nullptr); });
+  const FormResults r = run_forms<Model, T, D>([&](auto kernel) {
+    return run_schedule<Model, T, D>(model, kernel, h_last.empty() ? &h_last : nullptr, whole_blocks);
+  });
   const PassResult& scalar = r.scalar;
   const int count = static_cast<int>(h_last.size()) / Model::history_size;
+  REQUIRE((count % 8 == 0) == whole_blocks);
   const std::size_t last = scalar.overlap.size() - static_cast<std::size_t>(count);
   const auto lp = host_lane_pair(model);
   auto scene = pair_scene<T, D>(1.0);
@@ -270,6 +278,9 @@ TEMPLATE_LIST_TEST_CASE("contacts in lanes: Nan 2022's common path and its rare 
   mats[0].surface_energy = 50.0;
   mats[0].yield_stress = 2e8;
   SECTION("the full model") { compare_history_forms<Full, T, D>(Full::create(mats), true); }
+  SECTION("the full model, a list of whole blocks") {
+    compare_history_forms<Full, T, D>(Full::create(mats), true, true);
+  }
   SECTION("adhesion alone (no plasticity, friction or damping)") {
     // elastic lines leave almost no room for the cohesive branch in this scene: no pulling required
     using Model = Nan2022<T, Effects<kAdhesion>, D>;
@@ -296,6 +307,9 @@ TEMPLATE_LIST_TEST_CASE("contacts in lanes: JKR's warm-started root and its rare
   auto mats = pair_materials<T>(0.5);
   mats[0].surface_energy = 50.0;
   SECTION("friction and damping") { compare_history_forms<Full, T, D>(Full::create(mats), true); }
+  SECTION("friction and damping, a list of whole blocks") {
+    compare_history_forms<Full, T, D>(Full::create(mats), true, true);
+  }
   SECTION("adhesion alone") {
     using Model = Jkr<T, Effects<kAdhesion>, D>;
     compare_history_forms<Model, T, D>(Model::create(mats), true);

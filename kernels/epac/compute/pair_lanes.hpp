@@ -13,15 +13,17 @@
 // `bool lane_form_applies() const` (false: no lanes for these parameters).
 //
 // One work item takes a block of W contacts (core/simd_lanes.hpp: 8 on host backends that
-// vectorise the block, 1 on GPUs, where this is one thread per contact). Five stages per block:
-//   1. gather (no branch: the host compiler vectorises its index work): the list entries, both
-//      particles' state and the history into lane arrays;
-//   2. the common path (one loop over the lanes, vectorised by the host compiler): the minimum
-//      image, geometry, the law, damping and the sticking spring, with selects in place of tests;
-//   3. the law's rare lanes (scalar, laws with normal history): the one-contact kernel's
-//      finish_contact, which stores and adds that contact itself;
-//   4. Coulomb sliding (scalar), only for the lanes that slide;
-//   5. scatter (scalar): history, outputs and the particle sums.
+// vectorise the block, 1 on GPUs, where this is one thread per contact). The stages of a block:
+//   1. gather (no branch: the host compiler vectorises its index work): the list entries and
+//      the history into lane arrays (a full block's are contiguous: vector loads);
+//   2. the common path (one loop over the lanes, vectorised by the host compiler): both
+//      particles' state, the minimum image, geometry, the law, damping and the sticking spring,
+//      with selects in place of tests; the rare lanes keep their stored history;
+//   3. Coulomb sliding (scalar), only for the lanes that slide;
+//   4. the history of every lane stored (vector stores for a full block);
+//   5. the law's rare lanes (scalar, laws with normal history): the one-contact kernel's
+//      finish_contact from the stored history, which stores and adds that contact itself;
+//   6. scatter (scalar): outputs and the particle sums.
 // The divisions and roots of one contact (the latency chains that bound the scalar kernel,
 // docs/performance.md) then run side by side for W contacts. Each lane computes the scalar
 // kernel's expressions in its order with exact selects (lane_select), so without FMA
@@ -160,30 +162,37 @@ void pair_kernel_lanes(const Model& model, const Particles<T, Device>& p, const 
         T L_active[W], L_slides[W];  // flags as T (1 or 0): the vectors' element size
         T L_nh[NHL][W], L_rare[W];
         // 1. gather; lanes past the list's end repeat the block's first contact (finite
-        //    arithmetic, nothing stored)
-        for (int l = 0; l < W; ++l) {
-          const int k = k0 + (l < lanes ? l : 0);
-          L_i[l] = first(k);
-          L_j[l] = second(k);
-        }
-        // history in the frame of the smaller global id: swapped by selects, in a loop of its own
-        // (no branch in a loop: they vectorise); a list ordered by ids needs neither test nor loads
-        if (by_gid)
+        //    arithmetic, nothing stored). A full block reads contiguous entries: vector loads
+        //    (the tail block's select would make the compiler assemble them from scalar loads)
+        auto gather = [&](auto lane_k) {
           for (int l = 0; l < W; ++l) {
-            const int a = L_i[l], e = L_j[l];
-            const bool swap = p.gid(e) < p.gid(a);
-            L_i[l] = lane_select(swap, e, a);
-            L_j[l] = lane_select(swap, a, e);
+            const int k = lane_k(l);
+            L_i[l] = first(k);
+            L_j[l] = second(k);
           }
-        for (int l = 0; l < W; ++l) {
-          const int k = k0 + (l < lanes ? l : 0);
-          for (int f = 0; f < NH; ++f) L_nh[f][l] = hist[k + f * hstride];
-          if (friction) {
-            L_hx[l] = hist[k + NH * hstride];
-            L_hy[l] = hist[k + (NH + 1) * hstride];
-            L_hz[l] = hist[k + (NH + 2) * hstride];
+          // history in the frame of the smaller global id: swapped by selects, in a loop of its
+          // own (no branch in a loop: they vectorise); a list ordered by ids needs neither
+          if (by_gid)
+            for (int l = 0; l < W; ++l) {
+              const int a = L_i[l], e = L_j[l];
+              const bool swap = p.gid(e) < p.gid(a);
+              L_i[l] = lane_select(swap, e, a);
+              L_j[l] = lane_select(swap, a, e);
+            }
+          for (int l = 0; l < W; ++l) {
+            const int k = lane_k(l);
+            for (int f = 0; f < NH; ++f) L_nh[f][l] = hist[k + f * hstride];
+            if (friction) {
+              L_hx[l] = hist[k + NH * hstride];
+              L_hy[l] = hist[k + (NH + 1) * hstride];
+              L_hz[l] = hist[k + (NH + 2) * hstride];
+            }
           }
-        }
+        };
+        if (lanes == W)
+          gather([k0](int l) { return k0 + l; });
+        else
+          gather([k0, lanes](int l) { return k0 + (l < lanes ? l : 0); });
         // 2. the common path, vectorised on host backends. The particles' state is loaded here,
         //    not copied into lane arrays first: the compiler loads it straight into vector
         //    registers (about 5% of the force pass against the copy, measured 2026-12-05)
@@ -217,7 +226,8 @@ void pair_kernel_lanes(const Model& model, const Particles<T, Device>& p, const 
           for (int f = 0; f < NH; ++f) lh.v[f] = L_nh[f][l];
           lh.rare = false;
           const NormalForce<T> nf = lane_law<Model>::eval(pair, T(delta), R_eff, lh);
-          for (int f = 0; f < NH; ++f) L_nh[f][l] = lh.v[f];
+          // rare lanes keep the stored history (their one-contact code reads it back)
+          for (int f = 0; f < NH; ++f) L_nh[f][l] = lane_select(lh.rare, L_nh[f][l], lh.v[f]);
           L_rare[l] = lane_select(lh.rare, T(1), T(0));
           T fn = nf.f;
           T root_mkn = T(0);
@@ -254,22 +264,13 @@ void pair_kernel_lanes(const Model& model, const Particles<T, Device>& p, const 
           L_arm_i[l] = arm_i;
           L_arm_j[l] = arm_j;
           // apart: the spring is forgotten (reset_tangential)
-          L_hx[l] = lane_select(nf.active, tt.xi.x, T(0));
-          L_hy[l] = lane_select(nf.active, tt.xi.y, T(0));
-          L_hz[l] = lane_select(nf.active, tt.xi.z, T(0));
+          L_hx[l] = lane_select(lh.rare, L_hx[l], lane_select(nf.active, tt.xi.x, T(0)));
+          L_hy[l] = lane_select(lh.rare, L_hy[l], lane_select(nf.active, tt.xi.y, T(0)));
+          L_hz[l] = lane_select(lh.rare, L_hz[l], lane_select(nf.active, tt.xi.z, T(0)));
         }
         auto fa = fsum.access();
         auto ta = tsum.access();
-        // 3. the law's rare lanes: the one-contact kernel's code from the stored history (a plain
-        //    if on a constant: nvcc's extended lambdas cannot first-capture inside if constexpr)
-        if (NH > 0)
-          for (int l = 0; l < lanes; ++l) {
-            if (L_rare[l] == T(0)) continue;
-            const int k = k0 + l, i = L_i[l], j = L_j[l];
-            finish_pair_contact(model, conv, p, i, j, 1, pair_separation(p, i, j), dt,
-                                HistoryRow<T, Device>{hdata, k, 0}, out, nobuf, k, fa, ta);
-          }
-        // 4. Coulomb sliding, Nan (23)
+        // 3. Coulomb sliding, Nan (23)
         if (friction)
           for (int l = 0; l < lanes; ++l) {
             if (L_slides[l] == T(0)) continue;
@@ -282,16 +283,40 @@ void pair_kernel_lanes(const Model& model, const Particles<T, Device>& p, const 
             L_hy[l] = xi.y;
             L_hz[l] = xi.z;
           }
-        // 5. scatter (the rare lanes are done)
+        // 4. the history, every lane at once (vector stores on host backends; the rare lanes store
+        //    what they read, which the one-contact code below reads back)
+        if (lanes == W) {
+          for (int f = 0; f < NH; ++f)
+            for (int l = 0; l < W; ++l) hist[k0 + l + f * hstride] = L_nh[f][l];
+          if (friction)
+            for (int l = 0; l < W; ++l) {
+              hist[k0 + l + NH * hstride] = L_hx[l];
+              hist[k0 + l + (NH + 1) * hstride] = L_hy[l];
+              hist[k0 + l + (NH + 2) * hstride] = L_hz[l];
+            }
+        } else {
+          for (int l = 0; l < lanes; ++l) {
+            for (int f = 0; f < NH; ++f) hist[k0 + l + f * hstride] = L_nh[f][l];
+            if (friction) {
+              hist[k0 + l + NH * hstride] = L_hx[l];
+              hist[k0 + l + (NH + 1) * hstride] = L_hy[l];
+              hist[k0 + l + (NH + 2) * hstride] = L_hz[l];
+            }
+          }
+        }
+        // 5. the law's rare lanes: the one-contact kernel's code from the stored history (a plain
+        //    if on a constant: nvcc's extended lambdas cannot first-capture inside if constexpr)
+        if (NH > 0)
+          for (int l = 0; l < lanes; ++l) {
+            if (L_rare[l] == T(0)) continue;
+            const int k = k0 + l, i = L_i[l], j = L_j[l];
+            finish_pair_contact(model, conv, p, i, j, 1, pair_separation(p, i, j), dt,
+                                HistoryRow<T, Device>{hdata, k, 0}, out, nobuf, k, fa, ta);
+          }
+        // 6. scatter (the rare lanes are done)
         for (int l = 0; l < lanes; ++l) {
           const int k = k0 + l;
           if (NH > 0 && L_rare[l] != T(0)) continue;
-          for (int f = 0; f < NH; ++f) hist[k + f * hstride] = L_nh[f][l];
-          if (friction) {
-            hist[k + NH * hstride] = L_hx[l];
-            hist[k + (NH + 1) * hstride] = L_hy[l];
-            hist[k + (NH + 2) * hstride] = L_hz[l];
-          }
           if (out_fn.extent(0) > 0) out_fn(k) = L_fn[l];
           if (out_delta.extent(0) > 0) out_delta(k) = L_delta[l];
           if (L_active[l] == T(0)) continue;
