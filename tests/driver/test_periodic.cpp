@@ -523,6 +523,38 @@ void check_same_particles(const std::filesystem::path& a, const std::filesystem:
   }
 }
 
+// The fcc lattice of the compressed scenes below (a = 2.8284271247461903e-3 m, radii 0.94-0.99
+// mm, jitter 5 um) with `cells`, from the box's corner at the origin.
+std::string fcc_lattice(const std::string& cells) {
+  return R"(
+[particles.lattice]
+type = "fcc"
+origin = [0.0, 0.0, 0.0]
+a = 2.8284271247461903e-3
+cells = )" +
+         cells +
+         R"(
+radius_min = 0.94e-3
+radius_max = 0.99e-3
+jitter = 5.0e-6
+material = "bead"
+seed = 4711
+)";
+}
+
+// Compression scenes: `geometry` (their [box], [box.deform] and walls), the lattice of `cells`
+// and 400 steps sampled every 50 with the given skin.
+std::string compression_scene(const std::string& geometry, const std::string& cells, const std::string& skin) {
+  return kBead + geometry + fcc_lattice(cells) + R"(
+[run]
+dt = 2.0e-6
+steps = 400
+output_interval = 50
+particle_output = true
+skin = )" +
+         skin + "\n";
+}
+
 // Two runs of one scene compressed to 0.85 of the edge 6a (a = 2.8284271247461903e-3 m) along
 // x and y (and z where `axes` is 3, else z is bounded by walls) in 300 steps, sampled every 50
 // of 400 steps: the same pair and wall contacts at every sample, kinetic energy and the `walls`'
@@ -572,7 +604,7 @@ void check_same_compression(const std::filesystem::path& d1, const std::filesyst
 // compression's term, l skin / 2, rebuilt 5 times and had 10 contacts at step 50 instead of 931).
 TEST_CASE("box deformation: the lists last until the compression uses up the skin", "[driver][periodic][deform]") {
   auto scene = [](const std::string& skin) {
-    return kBead + R"(
+    return compression_scene(R"(
 [box]
 lo = [0.0, 0.0, 0.0]
 hi = [0.016970562748477142, 0.016970562748477142, 0.016970562748477142]
@@ -581,24 +613,8 @@ periodic = [true, true, true]
 [box.deform]
 scale = [0.85, 0.85, 0.85]
 steps = 300
-
-[particles.lattice]
-type = "fcc"
-a = 2.8284271247461903e-3
-cells = [6, 6, 6]
-radius_min = 0.94e-3
-radius_max = 0.99e-3
-jitter = 5.0e-6
-material = "bead"
-seed = 4711
-
-[run]
-dt = 2.0e-6
-steps = 400
-output_interval = 50
-particle_output = true
-skin = )" + skin +
-           "\n";
+)",
+                             "[6, 6, 6]", skin);
   };
   const auto d1 = test::fresh_out_dir("deform_rule");
   const auto d2 = test::fresh_out_dir("deform_every_step");
@@ -625,7 +641,7 @@ skin = )" + skin +
 TEST_CASE("box deformation with walls: the lists last until the compression uses up the skin",
           "[driver][periodic][deform][walls]") {
   auto scene = [](const std::string& skin) {
-    return kBead + R"(
+    return compression_scene(R"(
 [box]
 lo = [0.0, 0.0, -0.0015]
 hi = [0.016970562748477142, 0.016970562748477142, 0.0095]
@@ -646,25 +662,8 @@ name = "lid"
 point = [0.0, 0.0, 8.121e-3]
 normal = [0.0, 0.0, -1.0]
 material = "bead"
-
-[particles.lattice]
-type = "fcc"
-origin = [0.0, 0.0, 0.0]
-a = 2.8284271247461903e-3
-cells = [6, 6, 3]
-radius_min = 0.94e-3
-radius_max = 0.99e-3
-jitter = 5.0e-6
-material = "bead"
-seed = 4711
-
-[run]
-dt = 2.0e-6
-steps = 400
-output_interval = 50
-particle_output = true
-skin = )" + skin +
-           "\n";
+)",
+                             "[6, 6, 3]", skin);
   };
   const auto d1 = test::fresh_out_dir("deform_walls_rule");
   const auto d2 = test::fresh_out_dir("deform_walls_every_step");
@@ -877,16 +876,8 @@ steps = 200
 
 [particles]
 order = "shuffled"
-
-[particles.lattice]
-a = 2.8284271247461903e-3
-cells = [10, 10, 11]
-radius_min = 0.94e-3
-radius_max = 0.99e-3
-jitter = 5.0e-6
-material = "bead"
-seed = 4711
-
+)" + fcc_lattice("[10, 10, 11]") +
+           R"(
 [run]
 dt = 2.0e-6
 steps = 200

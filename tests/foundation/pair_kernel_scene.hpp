@@ -92,8 +92,10 @@ PairScene<T, D> pair_scene(double speed, int nmat = 1, bool periodic = false, bo
         fj.push_back(idx(c, b, n_side - 1));
       }
   }
-  fi.push_back(5);  // one more: no multiple of 8
-  fj.push_back(idx(1, 1, 0));
+  // one more: no multiple of 8, and touching (the face neighbours 5 and 6 listed a second time,
+  // the other way round), so that the last block's last lane has a force and a history to store
+  fi.push_back(idx(0, 0, 6));
+  fj.push_back(idx(0, 0, 5));
   if (gid_ordered)
     for (std::size_t k = 0; k < fi.size(); ++k)
       if (gid(fj[k]) < gid(fi[k])) std::swap(fi[k], fj[k]);
