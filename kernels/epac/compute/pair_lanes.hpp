@@ -284,26 +284,22 @@ void pair_kernel_lanes(const Model& model, const Particles<T, Device>& p, const 
             L_hz[l] = xi.z;
           }
         // 4. the history, every lane at once (vector stores on host backends; the rare lanes store
-        //    what they read, which the one-contact code below reads back)
-        if (lanes == W) {
+        //    what they read, which the one-contact code below reads back). A full block stores W
+        //    lanes, a compile-time count (vector stores); the list's last block its own count
+        auto store = [&](auto stored) {
           for (int f = 0; f < NH; ++f)
-            for (int l = 0; l < W; ++l) hist[k0 + l + f * hstride] = L_nh[f][l];
+            for (int l = 0; l < stored; ++l) hist[k0 + l + f * hstride] = L_nh[f][l];
           if (friction)
-            for (int l = 0; l < W; ++l) {
+            for (int l = 0; l < stored; ++l) {
               hist[k0 + l + NH * hstride] = L_hx[l];
               hist[k0 + l + (NH + 1) * hstride] = L_hy[l];
               hist[k0 + l + (NH + 2) * hstride] = L_hz[l];
             }
-        } else {
-          for (int l = 0; l < lanes; ++l) {
-            for (int f = 0; f < NH; ++f) hist[k0 + l + f * hstride] = L_nh[f][l];
-            if (friction) {
-              hist[k0 + l + NH * hstride] = L_hx[l];
-              hist[k0 + l + (NH + 1) * hstride] = L_hy[l];
-              hist[k0 + l + (NH + 2) * hstride] = L_hz[l];
-            }
-          }
-        }
+        };
+        if (lanes == W)
+          store(LaneCount<W>());
+        else
+          store(lanes);
         // 5. the law's rare lanes: the one-contact kernel's code from the stored history (a plain
         //    if on a constant: nvcc's extended lambdas cannot first-capture inside if constexpr)
         if (NH > 0)

@@ -37,6 +37,14 @@ struct particle_lanes
     : std::integral_constant<int,
                              (contact_lanes<ExecutionSpace>::value > 1 ? contact_lanes<ExecutionSpace>::value : 1)> {};
 
+// A lane count fixed at compile time, usable where a run-time count is (a loop bound): a full
+// block's loops then have a constant trip count and the host compiler emits vector loads and
+// stores. Not std::integral_constant: its conversion to int is a host function to nvcc.
+template <int N>
+struct LaneCount {
+  KOKKOS_FORCEINLINE_FUNCTION constexpr operator int() const { return N; }
+};
+
 // c ? a : b as bit operations: a ternary is a branch to the compiler's middle end, and jump
 // threading then duplicates the code after it for each side, which leaves stores and divisions
 // on one path only (the vectoriser gives up: "control flow in loop"). Both operands are
