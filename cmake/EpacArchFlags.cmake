@@ -12,6 +12,14 @@
 #   EPAC_NO_MATH_ERRNO ON (default): -fno-math-errno. epac never reads errno and checks every
 #                      sqrt/cbrt/log argument itself, so this changes no result; it lets the
 #                      compiler use the square-root instruction without a library fallback call.
+#   EPAC_NO_GATHER     ON (default): with GCC on x86-64 and an -march, -mtune-ctrl=^use_gather:
+#                      no vector gather instructions for 8 or more elements (GCC 12's znver3
+#                      tuning, what its -march=native gives on this project's AMD EPYC, uses
+#                      them). The contact lanes load each lane's particle state from its own
+#                      index; in float (8 lanes in one vector) g++ gathered them, and scalar
+#                      loads ran 9-12% faster there (docs/performance.md, "Build flags"). Loads
+#                      of the same values: no result changes. Double code is the same (GCC 12
+#                      loads 4 elements one by one on znver3 already).
 # GPU builds (Kokkos with CUDA or HIP) take neither: the kernels' code is the device's.
 # Sets EPAC_ARCH_RESOLVED (what EPAC_ARCH became) and EPAC_OWN_AVX512 (the flags enable AVX-512).
 set(EPAC_ARCH "auto" CACHE STRING "auto | portable | native | a -march value, for epac's own executables")
@@ -21,6 +29,7 @@ set(EPAC_ARCH_AUTO_MARCH "native" CACHE STRING "the -march value EPAC_ARCH=auto 
 set(EPAC_ARCH_PROBE_LAUNCHER "" CACHE STRING "a command list the auto probe runs under")
 mark_as_advanced(EPAC_ARCH_AUTO_MARCH EPAC_ARCH_PROBE_LAUNCHER)
 option(EPAC_NO_MATH_ERRNO "-fno-math-errno for epac's own executables" ON)
+option(EPAC_NO_GATHER "GCC on x86-64 with an -march: no vector gathers (-mtune-ctrl=^use_gather)" ON)
 
 # auto: builds the probe with -march=${EPAC_ARCH_AUTO_MARCH} and runs it; out_arch: that value or
 # portable, out_why: the reason.
@@ -88,6 +97,12 @@ if(NOT EPAC_GPU_KOKKOS AND CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang")
                           "-march value it knows)")
     endif()
     list(APPEND EPAC_OWN_TARGET_FLAGS ${_march})
+    if(EPAC_NO_GATHER AND CMAKE_CXX_COMPILER_ID STREQUAL "GNU" AND CMAKE_SYSTEM_PROCESSOR MATCHES "x86_64|AMD64")
+      check_cxx_compiler_flag("-mtune-ctrl=^use_gather" EPAC_HAS_TUNE_CTRL_NO_GATHER)
+      if(EPAC_HAS_TUNE_CTRL_NO_GATHER)
+        list(APPEND EPAC_OWN_TARGET_FLAGS "-mtune-ctrl=^use_gather")
+      endif()
+    endif()
   endif()
   if(EPAC_NO_MATH_ERRNO)
     list(APPEND EPAC_OWN_TARGET_FLAGS -fno-math-errno)

@@ -26,7 +26,9 @@ LAMMPS is built on first use (about 2-5 min; cached in ~/.cache/lammps-peer) wit
 of the LAMMPS peer kit supplied to developers beside the checkout (PEERS below; the kit's inputs
 are copied in bench/peers/lammps/, see its README.md); epac-run is taken from $EPAC_BUILD_DIR (default build/) and built if missing.
 Where that epac-run was built with -march=native, the LAMMPS it is compared with is built with
--march=native -fno-math-errno too, in ~/.cache/lammps-peer/build-native (--lmp overrides both).
+-march=native -fno-math-errno too, in ~/.cache/lammps-peer/build-native, and with GCC's
+-mtune-ctrl=^use_gather as well where epac-run has it (its default, EPAC_NO_GATHER), in
+~/.cache/lammps-peer/build-native-nogather (--lmp overrides all three).
 """
 import argparse
 import csv
@@ -48,6 +50,10 @@ LMP_DEFAULT = os.path.expanduser("~/.cache/lammps-peer/build/lmp")
 # in its own build folder (issue 20: both codes with the flags a user of this machine would use).
 LMP_NATIVE = os.path.expanduser("~/.cache/lammps-peer/build-native/lmp")
 NATIVE_FLAGS = "-march=native -fno-math-errno"
+# epac's default native build adds GCC's -mtune-ctrl=^use_gather (cmake/EpacArchFlags.cmake,
+# EPAC_NO_GATHER): the LAMMPS it is compared with then gets it too, in a folder of its own
+NO_GATHER = "-mtune-ctrl=^use_gather"
+LMP_NATIVE_NO_GATHER = os.path.expanduser("~/.cache/lammps-peer/build-native-nogather/lmp")
 
 def law_block(model, extra_material="", extra_model=""):
     """The scene's material (E 1e9 Pa, nu 0.3, density 1000, restitution 0.5, friction 0.5, as
@@ -296,7 +302,8 @@ def main():
     ap.add_argument("--json", default=None, help="write the measurements here")
     ap.add_argument("--lmp", default=os.environ.get("LMP"),
                     help=f"the LAMMPS executable (default: {LMP_DEFAULT}, or {LMP_NATIVE} built with "
-                         f"'{NATIVE_FLAGS}' when epac-run was built with -march=native; built on first use)")
+                         f"'{NATIVE_FLAGS}' when epac-run was built with -march=native, {LMP_NATIVE_NO_GATHER} "
+                         f"with '{NO_GATHER}' added where epac-run has it too; built on first use)")
     ap.add_argument("--legacy-epac-run", default=None,
                     help="an older epac-run without periodic boxes (a 'before' build): also timed, on the "
                          "wall-wrapped scene (legacy_walls_scene.py)")
@@ -308,6 +315,8 @@ def main():
     exe = ensure_epac_run()
     if args.lmp:
         lmp = ensure_lammps(args.lmp)
+    elif march_of(epac_build_flags(exe)) == "native" and NO_GATHER in epac_build_flags(exe):
+        lmp = ensure_lammps(LMP_NATIVE_NO_GATHER, NATIVE_FLAGS + " " + NO_GATHER)
     elif march_of(epac_build_flags(exe)) == "native":
         lmp = ensure_lammps(LMP_NATIVE, NATIVE_FLAGS)
     else:

@@ -11,6 +11,12 @@ function(configure_epac name out_rc out_log)
   set(${out_log} "${o}${e}" PARENT_SCOPE)
 endfunction()
 
+cmake_host_system_information(RESULT _arch QUERY OS_PLATFORM)
+set(EPAC_HOST_X86_64 OFF)
+if(_arch MATCHES "x86_64|AMD64")
+  set(EPAC_HOST_X86_64 ON)
+endif()
+
 # default: auto, i.e. -march=native where a probe built with it runs here, else none; the configure
 # output names the choice and its reason, and the recorded flags follow it; -fno-math-errno
 configure_epac(default rc log)
@@ -37,6 +43,13 @@ else()
 endif()
 if(NOT flags MATCHES "-fno-math-errno")
   message(FATAL_ERROR "default flags '${flags}': want -fno-math-errno")
+endif()
+# GCC on x86-64 with an -march: no vector gathers (EPAC_NO_GATHER), and never without an -march
+if(flags MATCHES "^GNU" AND flags MATCHES "-march" AND EPAC_HOST_X86_64 AND NOT flags MATCHES "-mtune-ctrl=\\^use_gather")
+  message(FATAL_ERROR "default flags '${flags}': want -mtune-ctrl=^use_gather (GCC, x86-64, an -march)")
+endif()
+if(NOT flags MATCHES "-march" AND flags MATCHES "use_gather")
+  message(FATAL_ERROR "default flags '${flags}': a gather tuning without an -march")
 endif()
 
 # portable: no -march whatever the machine
@@ -86,14 +99,14 @@ else()
                   "this CPU has AVX-512 and there is no valgrind to hide it")
 endif()
 
-# an explicit architecture every x86-64 GCC/Clang knows, and errno kept
-configure_epac(explicit rc log -DEPAC_ARCH=x86-64 -DEPAC_NO_MATH_ERRNO=OFF)
+# an explicit architecture every x86-64 GCC/Clang knows, errno kept, gathers left to the compiler
+configure_epac(explicit rc log -DEPAC_ARCH=x86-64 -DEPAC_NO_MATH_ERRNO=OFF -DEPAC_NO_GATHER=OFF)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "EPAC_ARCH=x86-64 configure failed:\n${log}")
 endif()
 file(READ ${WORK_DIR}/explicit/epac-build-flags.txt flags)
-if(NOT flags MATCHES "-march=x86-64" OR flags MATCHES "-fno-math-errno")
-  message(FATAL_ERROR "EPAC_ARCH=x86-64, EPAC_NO_MATH_ERRNO=OFF flags '${flags}'")
+if(NOT flags MATCHES "-march=x86-64" OR flags MATCHES "-fno-math-errno" OR flags MATCHES "use_gather")
+  message(FATAL_ERROR "EPAC_ARCH=x86-64, EPAC_NO_MATH_ERRNO=OFF, EPAC_NO_GATHER=OFF flags '${flags}'")
 endif()
 
 # a value the compiler rejects: configure fails and names the option and the value
