@@ -20,10 +20,10 @@
 //      particles' state, the minimum image, geometry, the law, damping and the sticking spring,
 //      with selects in place of tests; the rare lanes keep their stored history;
 //   3. Coulomb sliding (scalar), only for the lanes that slide;
-//   4. the history of every lane stored (vector stores for a full block);
+//   4. the history and the outputs of every lane stored (vector stores for a full block);
 //   5. the law's rare lanes (scalar, laws with normal history): the one-contact kernel's
 //      finish_contact from the stored history, which stores and adds that contact itself;
-//   6. scatter (scalar): outputs and the particle sums.
+//   6. scatter (scalar): the particle sums of the active lanes the common path covers.
 // The divisions and roots of one contact (the latency chains that bound the scalar kernel,
 // docs/performance.md) then run side by side for W contacts. Each lane computes the scalar
 // kernel's expressions in its order with exact selects (lane_select), so without FMA
@@ -148,8 +148,8 @@ void pair_kernel_lanes(const Model& model, const Particles<T, Device>& p, const 
   const auto hdata = h.data;
   T* const hist = h.data.data();
   const std::size_t hstride = (friction || NH > 0) ? h.data.stride(1) : 0;
-  const auto out_fn = out.normal_force;
-  const auto out_delta = out.overlap;
+  T* const out_fn = out.normal_force.extent(0) > 0 ? out.normal_force.data() : nullptr;
+  T* const out_delta = out.overlap.extent(0) > 0 ? out.overlap.data() : nullptr;
   Kokkos::parallel_for(
       "epac::compute_pair_forces_lanes", Kokkos::RangePolicy<exec>(0, (count + W - 1) / W), KOKKOS_LAMBDA(int b) {
         const int k0 = b * W;
@@ -179,14 +179,15 @@ void pair_kernel_lanes(const Model& model, const Particles<T, Device>& p, const 
               L_i[l] = lane_select(swap, e, a);
               L_j[l] = lane_select(swap, a, e);
             }
-          for (int l = 0; l < W; ++l) {
-            const int k = lane_k(l);
-            for (int f = 0; f < NH; ++f) L_nh[f][l] = hist[k + f * hstride];
-            if (friction) {
-              L_hx[l] = hist[k + NH * hstride];
-              L_hy[l] = hist[k + (NH + 1) * hstride];
-              L_hz[l] = hist[k + (NH + 2) * hstride];
-            }
+          // one field at a time, from the block's first entry: each loop is one contiguous load
+          // per vector
+          const T* const row = (friction || NH > 0) ? hist + k0 : hist;  // no history: no row
+          for (int f = 0; f < NH; ++f)
+            for (int l = 0; l < W; ++l) L_nh[f][l] = row[(lane_k(l) - k0) + f * hstride];
+          if (friction) {
+            for (int l = 0; l < W; ++l) L_hx[l] = row[(lane_k(l) - k0) + NH * hstride];
+            for (int l = 0; l < W; ++l) L_hy[l] = row[(lane_k(l) - k0) + (NH + 1) * hstride];
+            for (int l = 0; l < W; ++l) L_hz[l] = row[(lane_k(l) - k0) + (NH + 2) * hstride];
           }
         };
         if (lanes == W)
@@ -252,7 +253,7 @@ void pair_kernel_lanes(const Model& model, const Particles<T, Device>& p, const 
           L_nz[l] = n.z;
           L_delta[l] = T(delta);
           L_fn[l] = lane_select(nf.active, fn, T(0));
-          L_active[l] = lane_select(nf.active, T(1), T(0));
+          L_active[l] = lane_select(nf.active & !lh.rare, T(1), T(0));  // rare lanes: stage 5 adds theirs
           const T f_lim2 = f_lim * f_lim;
           L_slides[l] = lane_select(nf.active & !lh.rare & (ft2 > f_lim2), T(1), T(0));  // & not &&: no branch
           L_ftx[l] = tt.ft.x;
@@ -287,22 +288,31 @@ void pair_kernel_lanes(const Model& model, const Particles<T, Device>& p, const 
         //    what they read, which the one-contact code below reads back). A full block stores W
         //    lanes, a compile-time count (vector stores); the list's last block its own count
         auto store = [&](auto stored) {
+          T* const row = (friction || NH > 0) ? hist + k0 : hist;
           for (int f = 0; f < NH; ++f)
-            for (int l = 0; l < stored; ++l) hist[k0 + l + f * hstride] = L_nh[f][l];
-          if (friction)
-            for (int l = 0; l < stored; ++l) {
-              hist[k0 + l + NH * hstride] = L_hx[l];
-              hist[k0 + l + (NH + 1) * hstride] = L_hy[l];
-              hist[k0 + l + (NH + 2) * hstride] = L_hz[l];
-            }
+            for (int l = 0; l < stored; ++l) row[l + f * hstride] = L_nh[f][l];
+          if (friction) {
+            for (int l = 0; l < stored; ++l) row[l + NH * hstride] = L_hx[l];
+            for (int l = 0; l < stored; ++l) row[l + (NH + 1) * hstride] = L_hy[l];
+            for (int l = 0; l < stored; ++l) row[l + (NH + 2) * hstride] = L_hz[l];
+          }
+          // the outputs (contiguous; stage 5 rewrites the rare lanes')
+          if (out_fn)
+            for (int l = 0; l < stored; ++l) out_fn[k0 + l] = L_fn[l];
+          if (out_delta)
+            for (int l = 0; l < stored; ++l) out_delta[k0 + l] = L_delta[l];
         };
         if (lanes == W)
           store(LaneCount<W>());
         else
           store(lanes);
         // 5. the law's rare lanes: the one-contact kernel's code from the stored history (a plain
-        //    if on a constant: nvcc's extended lambdas cannot first-capture inside if constexpr)
+        //    if on a constant: nvcc's extended lambdas cannot first-capture inside if constexpr).
+        //    One test per block first: a packing's blocks rarely hold a rare lane
+        int rare_lanes = 0;
         if (NH > 0)
+          for (int l = 0; l < W; ++l) rare_lanes += L_rare[l] != T(0);
+        if (NH > 0 && rare_lanes > 0)
           for (int l = 0; l < lanes; ++l) {
             if (L_rare[l] == T(0)) continue;
             const int k = k0 + l, i = L_i[l], j = L_j[l];
@@ -311,11 +321,7 @@ void pair_kernel_lanes(const Model& model, const Particles<T, Device>& p, const 
           }
         // 6. scatter (the rare lanes are done)
         for (int l = 0; l < lanes; ++l) {
-          const int k = k0 + l;
-          if (NH > 0 && L_rare[l] != T(0)) continue;
-          if (out_fn.extent(0) > 0) out_fn(k) = L_fn[l];
-          if (out_delta.extent(0) > 0) out_delta(k) = L_delta[l];
-          if (L_active[l] == T(0)) continue;
+          if (L_active[l] == T(0)) continue;  // inactive or rare
           const Vec3<T> n(L_nx[l], L_ny[l], L_nz[l]);
           Vec3<T> F = L_fn[l] * n;
           if (friction) {
