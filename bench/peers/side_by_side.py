@@ -313,11 +313,12 @@ def main():
     args = ap.parse_args()
 
     exe = ensure_epac_run()
+    exe_flags = epac_build_flags(exe)  # read once, used for the peer build and the table
     if args.lmp:
         lmp = ensure_lammps(args.lmp)
-    elif march_of(epac_build_flags(exe)) == "native" and NO_GATHER in epac_build_flags(exe):
+    elif march_of(exe_flags) == "native" and NO_GATHER in exe_flags:
         lmp = ensure_lammps(LMP_NATIVE_NO_GATHER, NATIVE_FLAGS + " " + NO_GATHER)
-    elif march_of(epac_build_flags(exe)) == "native":
+    elif march_of(exe_flags) == "native":
         lmp = ensure_lammps(LMP_NATIVE, NATIVE_FLAGS)
     else:
         lmp = ensure_lammps(LMP_DEFAULT)
@@ -394,7 +395,7 @@ def main():
                     results.append(row)
                     print(json.dumps(row), flush=True)
 
-    flags = {"epac": epac_build_flags(exe), "lammps": lammps_build_flags(lmp)}
+    flags = {"epac": exe_flags, "lammps": lammps_build_flags(lmp)}
     if args.before_epac_run:
         flags["epac_before"] = epac_build_flags(args.before_epac_run)
     print()
