@@ -265,10 +265,14 @@ struct MdrContactPenalty {
   // touching), or 0 when (lo, hi) is not the triangle's longest side (ties: the larger pair key)
   // or two centres coincide (no angle at c: r = 0 is skipped before any division).
   static KOKKOS_INLINE_FUNCTION P triangle_term(const Particles<T, Device>& p, const Side& ab, int c, P r_lo, P r_hi) {
-    const std::int64_t gc = p.gid(c);
-    if (!mdr_penalty_shorter(r_lo, pair_key(p.gid(ab.lo), gc), ab.r, ab.key) ||
-        !mdr_penalty_shorter(r_hi, pair_key(p.gid(ab.hi), gc), ab.r, ab.key))
-      return P(0);
+    // the lengths decide unless one equals r_ab: the ids (a random load) only for such a tie
+    if (!(r_lo <= ab.r) || !(r_hi <= ab.r)) return P(0);
+    if (r_lo == ab.r || r_hi == ab.r) {
+      const std::int64_t gc = p.gid(c);
+      if (!mdr_penalty_shorter(r_lo, pair_key(p.gid(ab.lo), gc), ab.r, ab.key) ||
+          !mdr_penalty_shorter(r_hi, pair_key(p.gid(ab.hi), gc), ab.r, ab.key))
+        return P(0);
+    }
     if (!(r_lo > P(0)) || !(r_hi > P(0))) return P(0);
     // alpha at c from the two unit directions, as LAMMPS (each product of the dot is commutative)
     return mdr_penalty_term(math::acos_clamped(dot(direction(p, c, ab.lo), direction(p, c, ab.hi)) / (r_lo * r_hi)));

@@ -84,24 +84,27 @@ KOKKOS_INLINE_FUNCTION MdrPlasticShape<T> mdr_plastic_shape(const MdrSideConstan
   return mdr_plastic_shape(c, delta_max, R, T(1) / R, c_A);  // R > 0 (host validation)
 }
 
-// What one side evaluation produces.
+// What one side evaluation produces. No member initialisers: a result exists only as
+// mdr_side_force's value-initialised `out` or a copy of one, and without them the evaluation's
+// working set (MdrEvaluation, two results per contact) is no longer zero-filled per contact (a
+// 584-byte memset call in the MDR pair kernel, 2-4% of a step of the authors' scene).
 template <class T>
 struct MdrSideResult {
-  T F = 0;          // MDR force, positive = compressive
-  T A = 0, B = 0;   // current ellipse
-  T d1De = 0;       // transformed elastic displacement delta_1D^e
-  T a = 0;          // contact half-width in MDR space (adhesive a when stretched)
-  T delta_max = 0;  // (19)
-  T area = 0;       // contact area (42) with c_A, >= 0
+  T F;          // MDR force, positive = compressive
+  T A, B;       // current ellipse
+  T d1De;       // transformed elastic displacement delta_1D^e
+  T a;          // contact half-width in MDR space (adhesive a when stretched)
+  T delta_max;  // (19)
+  T area;       // contact area (42) with c_A, >= 0
   // dF/d delta of this side at this state (what a pair's balance solve needs, mdr_pair_balance.hpp;
   // dead code for walls): 2 E_eff a on the elastic branch and on the fixed ellipse below
   // delta_max (times 1/r there, (35)), d(pi p_Y a_max^2)/d delta on plastic loading (may be < 0
   // near delta = R); in adhesive peeling an estimate (the edge springs' 2 E_eff a).
-  T stiffness = 0;
-  bool plastic = false;
-  bool loading = false;        // delta_o >= the previous delta_o,max (plastic loading test)
-  bool ratio_floored = false;  // guard of (35) active
-  int adhesion_state = 0;      // MdrAdhesionState, 0 without adhesion
+  T stiffness;
+  bool plastic;
+  bool loading;        // delta_o >= the previous delta_o,max (plastic loading test)
+  bool ratio_floored;  // guard of (35) active
+  int adhesion_state;  // MdrAdhesionState, 0 without adhesion
 };
 
 // Evaluates one side and advances its state s (the caller writes s back, or not, e.g. for
@@ -122,7 +125,7 @@ struct MdrSideResult {
 template <bool Plasticity, bool Adhesion, class T>
 KOKKOS_FORCEINLINE_FUNCTION MdrSideResult<T> mdr_side_force(const MdrSideConstants<T>& c, T gamma, T xi, T delta, T R,
                                                             T growth, MdrSideState<T>& s, T a_fac = T(1)) {
-  MdrSideResult<T> out;
+  MdrSideResult<T> out{};  // every field zero, then the regime's
   const T pi = constants<T>::pi;
   // (MdrDeltaMax::running_max, the authors' running maximum of delta itself: the model passes
   // growth = 0, and s.delta_o_max then holds the largest delta)
