@@ -95,6 +95,7 @@ class ContactStepper {
     return f;
   }
   double overlap() const { return to_host(out_.overlap)(0); }
+  double radius(int k) const { return double(to_host(p_.radius)(k)); }  // current (grown) radius
   bool radii_finite() const {
     auto r = to_host(p_.radius);
     for (int k = 0; k < p_.n; ++k)
