@@ -12,6 +12,7 @@
 #include "mdr_test_helpers.hpp"
 
 #include <cmath>
+#include <random>
 #include <vector>
 
 using namespace epac;
@@ -242,4 +243,48 @@ TEST_CASE("bulk response: host validation", "[mdr][bulk]") {
   CHECK_THROWS_WITH(M1::create({grain()}, options(0.5)), Catch::Contains("kBulkResponse"));
   CHECK_NOTHROW(M::create({grain()}, options(0.5)));
   CHECK_NOTHROW(M1::create({grain()}, options(0.0)));
+}
+
+// The mean surface displacement's pre-pass reads only the overlap and the radii of a pair
+// (pair_overlap_geometry, compute/pair_wall_geometry.hpp): they must be the force pass's bits
+// (pair_geometry_exact), across periodic boundaries, in both orientations, or the pre-pass would
+// measure a different split than the force pass applies. Random pairs near each other in a small
+// periodic box (every separation below L/2), with coordinates wrapped into it.
+TEMPLATE_LIST_TEST_CASE("bulk response: the pre-pass sees the force pass's overlap and radii", "[mdr][bulk]",
+                        test::BackendsAndScalars) {
+  using D = typename TestType::device;
+  using T = typename TestType::scalar;
+  const int n = 200;
+  const double L = 5e-3, R = 1e-3;
+  Particles<T, D> p(n);
+  auto x = Kokkos::create_mirror_view(p.x);
+  auto r = Kokkos::create_mirror_view(p.radius);
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int i = 0; i < n; i += 2) {
+    for (int d = 0; d < 3; ++d) {
+      const double a = L * u(rng);
+      const double b = a + (u(rng) - 0.5) * 3.0 * R;  // within 1.5 R of a on each axis, often across the box edge
+      x(i, d) = a;
+      x(i + 1, d) = b - L * std::floor(b / L);
+    }
+    r(i) = T(R * (0.8 + 0.4 * u(rng)));
+    r(i + 1) = T(R * (0.8 + 0.4 * u(rng)));
+  }
+  Kokkos::deep_copy(p.x, x);
+  Kokkos::deep_copy(p.radius, r);
+  Kokkos::deep_copy(p.mass, T(1e-6));
+  p.box.length = Vec3<double>(L, L, L);
+  Kokkos::View<int*, D> bad("bad", 1);
+  Kokkos::parallel_for(
+      "mdr_test::overlap_geometry", Kokkos::RangePolicy<typename D::execution_space>(0, n), KOKKOS_LAMBDA(int k) {
+        const int i = k, j = k % 2 == 0 ? k + 1 : k - 1;  // both orientations of each pair
+        double delta;
+        const ContactGeometry<T> full = detail::pair_geometry_exact<T, D, false>(p, i, j, 1, delta);
+        const ContactGeometry<T> lean = detail::pair_overlap_geometry(p, i, j);
+        if (!(lean.delta == full.delta && lean.R_i == full.R_i && lean.R_j == full.R_j && lean.i == full.i &&
+              lean.j == full.j && lean.i_is_first == full.i_is_first))
+          Kokkos::atomic_increment(&bad(0));
+      });
+  CHECK(test::to_host(bad)(0) == 0);
 }

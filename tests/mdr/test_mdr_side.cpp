@@ -259,3 +259,56 @@ TEST_CASE("MDR yield ratio: root of the yield equation, never-yield cases", "[md
   CHECK_THROWS_AS(mdr_side_constants<double>(rigid_wall_material(), MdrYieldOnset::elastic_law), ParameterError);
   CHECK_THROWS_AS(mdr_side_constants<double>(mdr_material(-1.0, 0.3, 1.0), MdrYieldOnset::elastic_law), ParameterError);
 }
+
+// Callers that solve for no pair split (the geometric split, the bulk response, walls) skip the
+// side's stiffness (mdr_side_force's with_stiffness = false: its two divisions per side). Nothing
+// else may change: the force, the width, the area and the advanced state are bit for bit those
+// of the full evaluation on a path through every regime (elastic, yield, plastic loading,
+// unloading, reloading, separation), with and without adhesion; the stiffness is 0 without it and
+// positive with it wherever the side touches.
+template <class D, class T, bool Adhesive>
+void check_side_without_stiffness(double gamma) {
+  const double R = 1e-3;
+  const auto c = side_constants<T>(1e8, kNu, 5e5);  // E/Y 200
+  std::vector<double> path;
+  for (int k = 1; k <= 40; ++k) path.push_back(k * 2e-4 * R);     // elastic, yield, plastic loading
+  for (int k = 39; k >= -5; --k) path.push_back(k * 1.9e-4 * R);  // unloading past separation
+  for (int k = 0; k <= 30; ++k) path.push_back(k * 2.1e-4 * R);   // reloading below delta_max
+  const int n = static_cast<int>(path.size());
+  Kokkos::View<T*, D> dv("path", n);
+  auto hd = Kokkos::create_mirror_view(dv);
+  for (int k = 0; k < n; ++k) hd(k) = T(path[k]);
+  Kokkos::deep_copy(dv, hd);
+  Kokkos::View<int*, D> bad("bad", 3);  // differing results, a stiffness not 0, touching without stiffness
+  const T g = T(gamma), Rt = T(R);
+  Kokkos::parallel_for(
+      "mdr_test::side_without_stiffness", Kokkos::RangePolicy<typename D::execution_space>(0, 1), KOKKOS_LAMBDA(int) {
+        MdrSideState<T> s_full, s_lean;
+        for (int k = 0; k < n; ++k) {
+          const MdrSideResult<T> full = mdr_side_force<true, Adhesive>(c, g, T(1), dv(k), Rt, T(0), s_full);
+          const MdrSideResult<T> lean =
+              mdr_side_force<true, Adhesive>(c, g, T(1), dv(k), Rt, T(0), s_lean, T(1), false);
+          const bool same = full.F == lean.F && full.a == lean.a && full.area == lean.area && full.A == lean.A &&
+                            full.B == lean.B && full.d1De == lean.d1De && full.delta_max == lean.delta_max &&
+                            full.plastic == lean.plastic && full.loading == lean.loading &&
+                            full.adhesion_state == lean.adhesion_state && s_full.delta_p == s_lean.delta_p &&
+                            s_full.delta_o_max == s_lean.delta_o_max && s_full.yielded == s_lean.yielded &&
+                            s_full.c_A == s_lean.c_A && s_full.a_adh == s_lean.a_adh;
+          if (!same) bad(0) += 1;
+          if (lean.stiffness != T(0)) bad(1) += 1;
+          if (full.a > T(0) && !(full.stiffness > T(0) || (full.plastic && full.loading))) bad(2) += 1;
+        }
+      });
+  const auto h = test::to_host(bad);
+  CHECK(h(0) == 0);
+  CHECK(h(1) == 0);
+  CHECK(h(2) == 0);
+}
+
+TEMPLATE_LIST_TEST_CASE("MDR side: without the stiffness, the same force, width and state bit for bit", "[mdr][side]",
+                        BackendsAndScalars) {
+  using D = typename TestType::device;
+  using T = typename TestType::scalar;
+  check_side_without_stiffness<D, T, false>(0.0);
+  check_side_without_stiffness<D, T, true>(0.05);  // adhesion: the tension branch below delta_p
+}

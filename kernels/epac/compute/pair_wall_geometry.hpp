@@ -64,6 +64,21 @@ KOKKOS_FORCEINLINE_FUNCTION ContactGeometry<T> pair_geometry_from(
   return g;
 }
 
+// The overlap and the radii of pair (i, j) only (no normal, R* or m*: none of their three
+// divisions), the same bits as pair_geometry_exact's: for passes that need no more (MDR's mean
+// surface displacement, mdr_model.hpp).
+template <class T, class Device>
+KOKKOS_FORCEINLINE_FUNCTION ContactGeometry<T> pair_overlap_geometry(const Particles<T, Device>& p, int i, int j) {
+  using P = typename Particles<T, Device>::position_type;
+  ContactGeometry<T> g;
+  g.i = i;
+  g.j = j;
+  g.R_i = p.radius(i);
+  g.R_j = p.radius(j);
+  g.delta = T(P(g.R_i) + P(g.R_j) - pair_separation(p, i, j).dist);
+  return g;
+}
+
 template <class T, class Device, bool SideOrder>
 KOKKOS_FORCEINLINE_FUNCTION ContactGeometry<T> pair_geometry_exact(const Particles<T, Device>& p, int i, int j,
                                                                    int nmat, double& delta) {

@@ -396,9 +396,8 @@ struct Mdr {
             i = j;
             j = t;
           }
-          double delta;
-          ContactGeometry<T> g = detail::pair_geometry_exact<T, Device, false>(p, i, j, nmat_, delta);
-          m.add_mean_surface_displacement(g, HistoryRow<T, Device>{ph, k, 0});
+          // the overlap and radii are all it reads (the force pass's bits)
+          m.add_mean_surface_displacement(detail::pair_overlap_geometry(p, i, j), HistoryRow<T, Device>{ph, k, 0});
         });
     if (wall_contacts.count > 0 && walls.n > 0) {
       const auto wfirst = wall_contacts.first, wsecond = wall_contacts.second;
@@ -416,8 +415,8 @@ struct Mdr {
 
   // One contact's terms of d delta-bar: each side's (w A_c of the last pass / A_con,0 of its
   // particle) (delta now - delta then), for touching contacts (LAMMPS skips the others).
-  KOKKOS_INLINE_FUNCTION void add_mean_surface_displacement(const ContactGeometry<T>& g,
-                                                            const HistoryRow<T, Device>& row) const {
+  KOKKOS_FORCEINLINE_FUNCTION void add_mean_surface_displacement(const ContactGeometry<T>& g,
+                                                                 const HistoryRow<T, Device>& row) const {
     if (!(g.delta > T(0))) return;
     detail::MdrEvaluation<T> e = detail::mdr_order_sides(g);
     if (Eff::radius_growth && growth.bound()) load_growth(e);
@@ -577,6 +576,7 @@ struct Mdr {
     }
     T d0 = e.dside[0];
     if (geometric_split) {
+      ps.with_stiffness = false;  // no solve: the sides' stiffnesses are not read
       ps(d0);
     } else {
       const T guess = balance_guess(g, row, e);
@@ -618,9 +618,10 @@ struct Mdr {
     // tolerance from step to step, flipping the exact plastic-loading test delta_o >= delta_o,max
     // and with it the growth: round-off then grew to 1e-3 of a compaction's positions).
     T d0 = e.dside[0];
-    if (pc.same_material)
+    if (pc.same_material) {
+      ps.with_stiffness = false;  // no solve and no warm start: the stiffnesses are not read
       ps(d0);
-    else {
+    } else {
       d0 = mdr_balance_split(ps, g.delta, balance_guess(g, row, e), q.R[0] + q.R[1]);
       ps.forces_at_root(mdr_balance_tolerance<T>());  // the forces at the root (mdr_pair_balance.hpp)
     }
@@ -685,7 +686,8 @@ struct Mdr {
   KOKKOS_FORCEINLINE_FUNCTION void wall_side(const MdrPairConstants<T>& pc, detail::MdrEvaluation<T>& e) const {
     const T gamma_w = Eff::adhesion ? pc.gamma_a : T(0);
     e.res[0] = mdr_side_force<Eff::plasticity, Eff::adhesion>(pc.side_a, gamma_w, xi, e.dside[0], e.Rs[0],
-                                                              e.growth_of[0], e.st[0], adhesive_radius_factor);
+                                                              e.growth_of[0], e.st[0], adhesive_radius_factor,
+                                                              false);  // no stiffness: no solve
   }
 
   // Per side: the outputs and sums, then (Write) the growth terms and the changed history.
@@ -769,14 +771,16 @@ struct Mdr {
     if (!e.is_pair) {
       const T gamma_w = Eff::adhesion ? pc.gamma_a : T(0);
       e.res[0] = mdr_side_force<Eff::plasticity, Eff::adhesion>(pc.side_a, gamma_w, xi, e.bulk[0].delta_mdr, e.Rs[0],
-                                                                e.growth_of[0], e.st[0], adhesive_radius_factor);
+                                                                e.growth_of[0], e.st[0], adhesive_radius_factor,
+                                                                false);  // no stiffness: no solve
       return;
     }
     PairSides ps;
     set_pair_sides(ps, g, pc, e);
     for (int s = 0; s < 2; ++s)
       e.res[s] = mdr_side_force<Eff::plasticity, Eff::adhesion>(*ps.c[s], ps.gamma[s], xi, e.bulk[s].delta_mdr, ps.R[s],
-                                                                ps.growth[s], e.st[s], adhesive_radius_factor);
+                                                                ps.growth[s], e.st[s], adhesive_radius_factor,
+                                                                false);  // no stiffness: no solve
   }
 
   // F_BULK and A_c of each side (A_c at the total overlap; it replaces the reported area).

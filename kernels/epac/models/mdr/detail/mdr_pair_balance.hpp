@@ -181,11 +181,12 @@ struct MdrPairSides {
   const MdrSideConstants<T>* c[2];
   T gamma[2], R[2], growth[2], lambda[2];
   T xi, delta;
-  T a_fac = T(1);            // adhesive radius factor (MdrAdhesiveRadius)
-  MdrSideState<T> start[2];  // the step's starting states
-  MdrSideState<T> st[2];     // after the last evaluation
-  MdrSideResult<T> r[2];     // of the last evaluation
-  T d[2];                    // overlaps of the last evaluation
+  T a_fac = T(1);              // adhesive radius factor (MdrAdhesiveRadius)
+  bool with_stiffness = true;  // false: one evaluation at a split not solved for (r[s].stiffness 0)
+  MdrSideState<T> start[2];    // the step's starting states
+  MdrSideState<T> st[2];       // after the last evaluation
+  MdrSideResult<T> r[2];       // of the last evaluation
+  T d[2];                      // overlaps of the last evaluation
   T x_last;
 
   // lambda_s = R_s E_o / ((R_0 + R_1)(E_0 + E_1)), see the header. R_s > 0, E_eff > 0 (create).
@@ -200,7 +201,8 @@ struct MdrPairSides {
     d[1] = delta - d0;
     for (int s = 0; s < 2; ++s) {
       st[s] = start[s];
-      r[s] = mdr_side_force<Plasticity, Adhesion>(*c[s], gamma[s], xi, d[s], R[s], growth[s], st[s], a_fac);
+      r[s] = mdr_side_force<Plasticity, Adhesion>(*c[s], gamma[s], xi, d[s], R[s], growth[s], st[s], a_fac,
+                                                  with_stiffness);
     }
     return lambda[0] * r[0].F - lambda[1] * r[1].F;
   }

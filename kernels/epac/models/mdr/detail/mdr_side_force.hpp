@@ -97,7 +97,7 @@ struct MdrSideResult {
   T delta_max;  // (19)
   T area;       // contact area (42) with c_A, >= 0
   // dF/d delta of this side at this state (what a pair's balance solve needs, mdr_pair_balance.hpp;
-  // dead code for walls): 2 E_eff a on the elastic branch and on the fixed ellipse below
+  // 0 where the caller asked for none, mdr_side_force's with_stiffness): 2 E_eff a on the elastic branch and on the fixed ellipse below
   // delta_max (times 1/r there, (35)), d(pi p_Y a_max^2)/d delta on plastic loading (may be < 0
   // near delta = R); in adhesive peeling an estimate (the edge springs' 2 E_eff a).
   T stiffness;
@@ -122,9 +122,14 @@ struct MdrSideResult {
 // one asin and two sqrt (ellipse force and width); plastic loading (delta at delta_max, the
 // common compaction step) is d = A/2 exactly, where (30) is E A B pi/8 and the width B/2, so it
 // costs one exp and two sqrt and no inverse trigonometric function; unloading adds the asin.
+//
+// with_stiffness = false leaves MdrSideResult::stiffness 0: callers that do not solve for the pair
+// split (the geometric split, the bulk response, walls, the equal-pair split of one material) then
+// skip its two divisions per side; every other result is the same bits.
 template <bool Plasticity, bool Adhesion, class T>
 KOKKOS_FORCEINLINE_FUNCTION MdrSideResult<T> mdr_side_force(const MdrSideConstants<T>& c, T gamma, T xi, T delta, T R,
-                                                            T growth, MdrSideState<T>& s, T a_fac = T(1)) {
+                                                            T growth, MdrSideState<T>& s, T a_fac = T(1),
+                                                            bool with_stiffness = true) {
   MdrSideResult<T> out{};  // every field zero, then the regime's
   const T pi = constants<T>::pi;
   // (MdrDeltaMax::running_max, the authors' running maximum of delta itself: the model passes
@@ -155,11 +160,13 @@ KOKKOS_FORCEINLINE_FUNCTION MdrSideResult<T> mdr_side_force(const MdrSideConstan
   if (Plasticity && s.yielded != T(0)) {
     const MdrPlasticShape<T> sh = mdr_plastic_shape(c, delta_max, R, T(1) / R, s.c_A);  // R > 0
     out.plastic = true;
-    d1De_per_delta = T(1) / sh.ratio;  // ratio >= mdr_min_recovery_ratio > 0
-    // plastic loading: F = pi p_Y a_max^2 ((30) at d = A/2 with (28)); p_Y' = -4.4/R (p_Y - Y) by
-    // (16)+(21), (a_max^2)' = 2 (R - delta) up to the equator ((36))
-    loading_stiffness =
-        pi * (T(2) * (R - math::min(delta_max, R)) * sh.p_Y - T(4.4) * (sh.p_Y - c.Y) * sh.a_max * sh.a_max / R);
+    if (with_stiffness) {
+      d1De_per_delta = T(1) / sh.ratio;  // ratio >= mdr_min_recovery_ratio > 0
+      // plastic loading: F = pi p_Y a_max^2 ((30) at d = A/2 with (28)); p_Y' = -4.4/R (p_Y - Y) by
+      // (16)+(21), (a_max^2)' = 2 (R - delta) up to the equator ((36))
+      loading_stiffness =
+          pi * (T(2) * (R - math::min(delta_max, R)) * sh.p_Y - T(4.4) * (sh.p_Y - c.Y) * sh.a_max * sh.a_max / R);
+    }
     out.A = sh.A;
     out.B = sh.B;
     // (35) rewritten as A/2 + (delta - delta_max)/r: the same value, without 0/0 at r -> 0;
@@ -186,7 +193,8 @@ KOKKOS_FORCEINLINE_FUNCTION MdrSideResult<T> mdr_side_force(const MdrSideConstan
     out.a = mdr_ellipse_contact_radius(out.A, out.B, out.d1De);
     if (Adhesion) s.a_adh = T(0);
   }
-  out.stiffness = (out.plastic && out.loading) ? loading_stiffness : T(2) * c.E_eff * out.a * d1De_per_delta;
+  if (with_stiffness)
+    out.stiffness = (out.plastic && out.loading) ? loading_stiffness : T(2) * c.E_eff * out.a * d1De_per_delta;
   return out;
 }
 
