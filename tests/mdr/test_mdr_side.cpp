@@ -260,12 +260,12 @@ TEST_CASE("MDR yield ratio: root of the yield equation, never-yield cases", "[md
   CHECK_THROWS_AS(mdr_side_constants<double>(mdr_material(-1.0, 0.3, 1.0), MdrYieldOnset::elastic_law), ParameterError);
 }
 
-// Callers that solve for no pair split (the geometric split, the bulk response, walls) skip the
-// side's stiffness (mdr_side_force's with_stiffness = false: its two divisions per side). Nothing
-// else may change: the force, the width, the area and the advanced state are bit for bit those
-// of the full evaluation on a path through every regime (elastic, yield, plastic loading,
-// unloading, reloading, separation), with and without adhesion; the stiffness is 0 without it and
-// positive with it wherever the side touches.
+// Callers that solve for no pair split (the geometric split, the bulk response, walls, the
+// equal-pair split of one material) skip the side's stiffness (mdr_side_force's with_stiffness =
+// false: its two divisions per side). Nothing else may change: the force, the width, the area and
+// the advanced state are bit for bit those of the full evaluation on a path through every regime
+// (elastic, yield, plastic loading, unloading, reloading, separation), with and without adhesion;
+// the stiffness is 0 without it and positive with it wherever the side touches.
 template <class D, class T, bool Adhesive>
 void check_side_without_stiffness(double gamma) {
   const double R = 1e-3;

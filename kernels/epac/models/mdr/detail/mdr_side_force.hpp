@@ -97,9 +97,10 @@ struct MdrSideResult {
   T delta_max;  // (19)
   T area;       // contact area (42) with c_A, >= 0
   // dF/d delta of this side at this state (what a pair's balance solve needs, mdr_pair_balance.hpp;
-  // 0 where the caller asked for none, mdr_side_force's with_stiffness): 2 E_eff a on the elastic branch and on the fixed ellipse below
-  // delta_max (times 1/r there, (35)), d(pi p_Y a_max^2)/d delta on plastic loading (may be < 0
-  // near delta = R); in adhesive peeling an estimate (the edge springs' 2 E_eff a).
+  // 0 where the caller asked for none, mdr_side_force's with_stiffness): 2 E_eff a on the elastic
+  // branch and on the fixed ellipse below delta_max (times 1/r there, (35)), d(pi p_Y a_max^2)/d
+  // delta on plastic loading (may be < 0 near delta = R); in adhesive peeling an estimate (the edge
+  // springs' 2 E_eff a).
   T stiffness;
   bool plastic;
   bool loading;        // delta_o >= the previous delta_o,max (plastic loading test)
