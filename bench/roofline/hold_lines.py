@@ -99,7 +99,7 @@ def hold_counts(exe, law, ncell, hold, workdir, function):
         per[(short_path(path), line)] += n
     for (path, line), n in before.items():
         per[(short_path(path), line)] -= n
-    return {k: v / contact_steps for k, v in per.items()}, contact_steps
+    return {k: v / contact_steps for k, v in per.items()}
 
 
 def report(laws, counts, top):
@@ -178,7 +178,7 @@ def main():
     counts = {}
     with tempfile.TemporaryDirectory(prefix="hold_lines.") as work:
         for law in a.laws:
-            counts[law], _ = hold_counts(exe, law, a.ncell, a.hold, work, a.function)
+            counts[law] = hold_counts(exe, law, a.ncell, a.hold, work, a.function)
     report(a.laws, counts, a.top)
     if a.json:
         with open(a.json, "w") as f:
