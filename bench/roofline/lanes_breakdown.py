@@ -24,7 +24,7 @@ contact (list entry) of the pass, and the run's own force phase (two passes now)
   python3 bench/roofline/lanes_breakdown.py --build build --laws hm nan [--repeats 5] [--ncell 14]
   python3 bench/roofline/lanes_breakdown.py --self-test   # the patches still apply; no build
 Needs a built `build` (epac-run) of a native build: the lanes run where `-DEPAC_ARCH` gives the
-host vector width. About 1 minute per variant to build.
+host vector width. About half a minute per variant to build, and 2-3 s per run.
 """
 import argparse
 import json
