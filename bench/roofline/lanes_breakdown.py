@@ -145,13 +145,11 @@ def patch(text):
 def build_flags(build):
     """(compiler, flags, defines, includes) of the driver library's objects in `build`."""
     flags_make = os.path.join(build, "drivers", "CMakeFiles", "epac_driver.dir", "flags.make")
-    vals = {}
+    vals, compiler = {}, None
     for line in open(flags_make):
         m = re.match(r"^(CXX_FLAGS|CXX_DEFINES|CXX_INCLUDES)\s*=\s*(.*)$", line)
         if m:
             vals[m.group(1)] = m.group(2).strip()
-    compiler = None
-    for line in open(flags_make):
         m = re.match(r"^# compile CXX with (\S+)", line)
         if m:
             compiler = m.group(1)
