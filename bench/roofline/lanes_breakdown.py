@@ -60,8 +60,8 @@ SIGNATURE = ("template <int W, class Model, class T, class Device, class Policy>
              "  // at compile time: a stage that is on is the unchanged kernel's code (a runtime flag in the\n"
              "  // gather stopped the common path's vectorisation)\n"
              "  constexpr bool no_scatter = (Off & 1) != 0, no_gather = (Off & 2) != 0;")
-GATHER = ("          const int i = L_i[l], j = L_j[l];\n          const double dx",
-          "          const int i = no_gather ? L_i[0] : L_i[l], j = no_gather ? L_j[0] : L_j[l];\n"
+GATHER = ("          const Index i = L_i[l], j = L_j[l];\n          const double dx",
+          "          const Index i = no_gather ? L_i[0] : L_i[l], j = no_gather ? L_j[0] : L_j[l];\n"
           "          const double dx")
 SLIDING = ("        if (friction)\n          for (int l = 0; l < lanes; ++l) {\n            if (L_slides[l] == T(0)) continue;",
            "        if (friction && !no_gather)\n          for (int l = 0; l < lanes; ++l) {\n"

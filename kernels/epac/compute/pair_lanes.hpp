@@ -43,6 +43,7 @@
 #include <epac/state/contact_list.hpp>
 #include <epac/state/particles.hpp>
 
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -137,6 +138,13 @@ void pair_kernel_lanes(const Model& model, const Particles<T, Device>& p, const 
   constexpr bool friction = Eff::friction;
   constexpr int NH = Model::normal_history_size;  // the tangential spring's fields follow
   constexpr int NHL = NH > 0 ? NH : 1;
+  // Host lanes' particle indices as wide as T: the lane loop's elements are then all of one
+  // width (float's geometry in double aside), and g++ takes one 512-bit vector for 8 lanes of
+  // double where the target has them. With 4-byte indices beside 8-byte values it falls back to
+  // two 256-bit halves (twice the divisions and roots issued: 0.85-0.91 of the time with 8-byte
+  // ones, docs/performance.md); float with 8-byte ones is not vectorised at all. GPUs (one lane):
+  // int, the fewer registers.
+  using Index = std::conditional_t<(W > 1 && sizeof(T) == 8), std::int64_t, int>;
   const int count = c.count;
   const auto fsum = sums.force.scatter;
   const auto tsum = sums.torque.scatter;
@@ -154,7 +162,7 @@ void pair_kernel_lanes(const Model& model, const Particles<T, Device>& p, const 
       "epac::compute_pair_forces_lanes", Kokkos::RangePolicy<exec>(0, (count + W - 1) / W), KOKKOS_LAMBDA(int b) {
         const int k0 = b * W;
         const int lanes = count - k0 < W ? count - k0 : W;
-        int L_i[W], L_j[W];
+        Index L_i[W], L_j[W];
         T L_hx[W], L_hy[W], L_hz[W];
         T L_nx[W], L_ny[W], L_nz[W], L_delta[W], L_fn[W];
         T L_ftx[W], L_fty[W], L_ftz[W], L_f_lim[W], L_ft2[W], L_k_t[W];
@@ -174,7 +182,7 @@ void pair_kernel_lanes(const Model& model, const Particles<T, Device>& p, const 
           // own (no branch in a loop: they vectorise); a list ordered by ids needs neither
           if (by_gid)
             for (int l = 0; l < W; ++l) {
-              const int a = L_i[l], e = L_j[l];
+              const Index a = L_i[l], e = L_j[l];
               const bool swap = p.gid(e) < p.gid(a);
               L_i[l] = lane_select(swap, e, a);
               L_j[l] = lane_select(swap, a, e);
@@ -202,7 +210,7 @@ void pair_kernel_lanes(const Model& model, const Particles<T, Device>& p, const 
         // axes have length 0
         const auto box = p.box;
         for (int l = 0; l < W; ++l) {
-          const int i = L_i[l], j = L_j[l];
+          const Index i = L_i[l], j = L_j[l];
           const double dx = box.image_select(p.x(i, 0) - p.x(j, 0), box.length.x);
           const double dy = box.image_select(p.x(i, 1) - p.x(j, 1), box.length.y);
           const double dz = box.image_select(p.x(i, 2) - p.x(j, 2), box.length.z);
@@ -315,7 +323,7 @@ void pair_kernel_lanes(const Model& model, const Particles<T, Device>& p, const 
         if (NH > 0 && rare_lanes > 0)
           for (int l = 0; l < lanes; ++l) {
             if (L_rare[l] == T(0)) continue;
-            const int k = k0 + l, i = L_i[l], j = L_j[l];
+            const int k = k0 + l, i = int(L_i[l]), j = int(L_j[l]);
             finish_pair_contact(model, conv, p, i, j, 1, pair_separation(p, i, j), dt,
                                 HistoryRow<T, Device>{hdata, k, 0}, out, nobuf, k, fa, ta);
           }
