@@ -1,7 +1,7 @@
 // Contacts in lanes (compute/pair_lanes.hpp) against the one-contact kernel it replaces for
 // Hertz-Mindlin, the linear spring, Nan 2022 and JKR (the last two: their common path in lanes,
-// the rest from the one-contact code), on every backend, double and float: blocks of 8 (the host
-// form) and of 1 (the GPU form) give the one-contact kernel's forces, torques, history and
+// the rest from the one-contact code), on every backend, double and float: blocks of 8 and 16 (the
+// host forms: 16 for float with AVX-512) and of 1 (the GPU form) give the one-contact kernel's forces, torques, history and
 // outputs, whether or not this build vectorises them. The scene has what each stage must handle:
 // touching and separated pairs, pairs listed against the global-id order (the history frame), a
 // list length that is no multiple of 8 (the last block's idle lanes), sticking and sliding
@@ -27,12 +27,13 @@ namespace {
 // The one-contact kernel, lanes of 8 and of 1, and compute_pair_forces' choice, each run through
 // `run(kernel)` (a runner of passes taking the kernel form).
 struct FormResults {
-  PassResult scalar, lanes8, lanes1, dispatched;
+  PassResult scalar, lanes8, lanes16, lanes1, dispatched;
 };
 template <class Model, class T, class D, class Run>
 FormResults run_forms(Run run) {
   return {run([](auto&&... a) { detail::pair_kernel<Model::effects::friction>(a..., ContactForceBuffer<T, D>{}); }),
           run([](auto&&... a) { detail::pair_kernel_lanes<8>(a...); }),
+          run([](auto&&... a) { detail::pair_kernel_lanes<16>(a...); }),
           run([](auto&&... a) { detail::pair_kernel_lanes<1>(a...); }),
           run([](auto&&... a) { compute_pair_forces(a...); })};
 }
@@ -47,7 +48,7 @@ void check_lanes_refuse(const Model& model, const char* why) {
 }
 
 void check_forms_agree(const FormResults& r, double rel) {
-  for (const auto* other : {&r.lanes8, &r.lanes1, &r.dispatched}) {
+  for (const auto* other : {&r.lanes8, &r.lanes16, &r.lanes1, &r.dispatched}) {
     check_close(r.scalar.force, other->force, rel, "force");
     check_close(r.scalar.torque, other->torque, rel, "torque");
     check_close(r.scalar.history, other->history, rel, "history");

@@ -94,7 +94,7 @@ void compute_pair_forces(const Model& model, const Particles<T, Device>& p, cons
   // (a common path in lanes, the rest scalar) take lanes only where a block holds several
   // contacts: with one lane (GPUs) a rare contact would run both forms, so they keep the
   // one-contact kernel there.
-  constexpr int lanes = contact_lanes<typename Device::execution_space>::value;
+  constexpr int lanes = contact_lanes<typename Device::execution_space, T>::value;
   constexpr bool lanes_pay = lanes > 1 || (lanes == 1 && Model::normal_history_size == 0);
   if constexpr (detail::runs_in_lanes<Model>::value && lanes_pay) {
     if (!buf.enabled() && model.nmat == 1 && detail::lane_form_applies(model)) {

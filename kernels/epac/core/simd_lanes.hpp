@@ -1,9 +1,9 @@
 #pragma once
 // Contacts in lanes (compute/pair_lanes.hpp): how many contacts one work item of the pair kernel
 // takes on an execution space, and the branch-free select its lanes use.
-// Host backends: a block of 8 contacts per work item, whose middle loop the host compiler turns
-// into SIMD instructions of the width the build allows (2 doubles with SSE4.1, 4 with AVX2, 8
-// with AVX-512). No intrinsics and no `omp simd` (its lowering moves each lane's small vectors
+// Host backends: a block of 8 contacts per work item (16 in float with AVX-512), whose middle
+// loop the host compiler turns into SIMD instructions of the width the build allows (2 doubles
+// with SSE4.1, 4 with AVX2, 8 with AVX-512). No intrinsics and no `omp simd` (its lowering moves each lane's small vectors
 // into strided arrays the vectoriser cannot store). GPUs: one lane, i.e. one contact per thread,
 // the same source.
 // g++ 12 vectorises the loop only where the target has 64-bit integer compares and blends (x86:
@@ -24,11 +24,19 @@ inline constexpr int kContactLanesHost = 8;  // 8 measured best of 4 / 8 / 16 (A
 inline constexpr int kContactLanesHost = 0;  // not vectorised here: the one-contact kernel
 #endif
 
-template <class ExecutionSpace>
+// Float lanes where vectors are 512 bits wide: 16, one vector of float per block (with 8, float's
+// block is half a vector: measured 0.82-0.84 of the time with 16 on AMD Zen 5, docs/performance.md).
+#if defined(__AVX512F__)
+inline constexpr int kContactLanesHostFloat = 2 * kContactLanesHost;
+#else
+inline constexpr int kContactLanesHostFloat = kContactLanesHost;
+#endif
+
+template <class ExecutionSpace, class T = double>
 struct contact_lanes
-    : std::integral_constant<
-          int, std::is_same<typename ExecutionSpace::memory_space, Kokkos::HostSpace>::value ? kContactLanesHost : 1> {
-};
+    : std::integral_constant<int, std::is_same<typename ExecutionSpace::memory_space, Kokkos::HostSpace>::value
+                                      ? (sizeof(T) == 4 ? kContactLanesHostFloat : kContactLanesHost)
+                                      : 1> {};
 
 // Particles in lanes (the driver's integration, driver/integrator.hpp): the same width on host
 // backends, one particle per work item where contacts take no lanes and on GPUs.
