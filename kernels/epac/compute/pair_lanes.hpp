@@ -138,13 +138,14 @@ void pair_kernel_lanes(const Model& model, const Particles<T, Device>& p, const 
   constexpr bool friction = Eff::friction;
   constexpr int NH = Model::normal_history_size;  // the tangential spring's fields follow
   constexpr int NHL = NH > 0 ? NH : 1;
-  // Host lanes' particle indices as wide as T: the lane loop's elements are then all of one
-  // width (float's geometry in double aside), and g++ takes one 512-bit vector for 8 lanes of
-  // double where the target has them. With 4-byte indices beside 8-byte values it falls back to
-  // two 256-bit halves (twice the divisions and roots issued: 0.85-0.91 of the time with 8-byte
-  // ones, docs/performance.md); float with 8-byte ones is not vectorised at all. GPUs (one lane):
-  // int, the fewer registers.
-  using Index = std::conditional_t<(W > 1 && sizeof(T) == 8), std::int64_t, int>;
+  // Host lanes' particle indices as wide as T where the lanes take 512-bit vectors
+  // (kHostLanes512): the lane loop's elements are then all of one width (float's geometry in
+  // double aside), and g++ takes one 512-bit vector for 8 lanes of double. With 4-byte indices
+  // beside 8-byte values it falls back to two 256-bit halves (twice the divisions and roots
+  // issued: 0.85-0.92 of the time with 8-byte ones). With 256-bit vectors 8-byte indices cost
+  // more (1.13 of the time with AVX2, 1.21 with GCC's Skylake-SP tuning), and float with them is
+  // not vectorised at all. GPUs (one lane): int, the fewer registers.
+  using Index = std::conditional_t<(W > 1 && sizeof(T) == 8 && kHostLanes512), std::int64_t, int>;
   const int count = c.count;
   const auto fsum = sums.force.scatter;
   const auto tsum = sums.torque.scatter;

@@ -1,7 +1,7 @@
 #pragma once
 // Contacts in lanes (compute/pair_lanes.hpp): how many contacts one work item of the pair kernel
 // takes on an execution space, and the branch-free select its lanes use.
-// Host backends: a block of 8 contacts per work item (16 in float with AVX-512), whose middle
+// Host backends: a block of 8 contacts per work item (16 in float with 512-bit vectors), whose middle
 // loop the host compiler turns into SIMD instructions of the width the build allows (2 doubles
 // with SSE4.1, 4 with AVX2, 8 with AVX-512). No intrinsics and no `omp simd` (its lowering moves each lane's small vectors
 // into strided arrays the vectoriser cannot store). GPUs: one lane, i.e. one contact per thread,
@@ -24,13 +24,24 @@ inline constexpr int kContactLanesHost = 8;  // 8 measured best of 4 / 8 / 16 (A
 inline constexpr int kContactLanesHost = 0;  // not vectorised here: the one-contact kernel
 #endif
 
-// Float lanes where vectors are 512 bits wide: 16, one vector of float per block (with 8, float's
-// block is half a vector: measured 0.82-0.84 of the time with 16 on AMD Zen 5, docs/performance.md).
-#if defined(__AVX512F__)
-inline constexpr int kContactLanesHostFloat = 2 * kContactLanesHost;
+// Whether the host compiler vectorises the lanes with 512-bit vectors: AVX-512, unless the build
+// tunes for an Intel core, where GCC prefers 256-bit vectors (X86_TUNE_AVX256_OPTIMAL; a build
+// with -mprefer-vector-width=256 should define EPAC_LANES_256). The lanes' block of float and
+// their index width follow it (docs/performance.md, "One 512-bit vector per block").
+#if defined(__AVX512F__) && !defined(EPAC_LANES_256) &&                                                       \
+    !(defined(__tune_skylake_avx512__) || defined(__tune_cascadelake__) || defined(__tune_cooperlake__) ||    \
+      defined(__tune_cannonlake__) || defined(__tune_icelake_client__) || defined(__tune_icelake_server__) || \
+      defined(__tune_tigerlake__) || defined(__tune_rocketlake__) || defined(__tune_sapphirerapids__) ||      \
+      defined(__tune_graniterapids__) || defined(__tune_graniterapids_d__) || defined(__tune_emeraldrapids__))
+inline constexpr bool kHostLanes512 = true;
 #else
-inline constexpr int kContactLanesHostFloat = kContactLanesHost;
+inline constexpr bool kHostLanes512 = false;
 #endif
+
+// Float lanes with 512-bit vectors: 16, one vector of float per block (with 8, float's block is
+// half a vector: 0.84-0.89 of the time with 16 on AMD Zen 5; with 256-bit vectors 16 lanes
+// measured 1.08 of 8).
+inline constexpr int kContactLanesHostFloat = kHostLanes512 ? 2 * kContactLanesHost : kContactLanesHost;
 
 template <class ExecutionSpace, class T = double>
 struct contact_lanes
