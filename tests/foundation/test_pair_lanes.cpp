@@ -1,8 +1,8 @@
 // Contacts in lanes (compute/pair_lanes.hpp) against the one-contact kernel it replaces for
 // Hertz-Mindlin, the linear spring, Nan 2022 and JKR (the last two: their common path in lanes,
-// the rest from the one-contact code), on every backend, double and float: blocks of 8 and 16 (the
-// host forms: 16 for float with AVX-512) and of 1 (the GPU form) give the one-contact kernel's forces, torques, history and
-// outputs, whether or not this build vectorises them. The scene has what each stage must handle:
+// the rest from the one-contact code), on every backend, double and float: blocks of 8 and 16
+// (the host forms: 16 for float with 512-bit vectors) and of 1 (the GPU form) give the one-contact
+// kernel's forces, torques, history and outputs, whether or not this build vectorises them. The scene has what each stage must handle:
 // touching and separated pairs, pairs listed against the global-id order (the history frame), a
 // list length that is no multiple of 8 (the last block's idle lanes), sticking and sliding
 // contacts (mu = 0: every loaded contact slides), coincident centres (no normal). With two
@@ -24,7 +24,7 @@ using namespace epac::test;
 
 namespace {
 
-// The one-contact kernel, lanes of 8 and of 1, and compute_pair_forces' choice, each run through
+// The one-contact kernel, lanes of 8, 16 and 1, and compute_pair_forces' choice, each run through
 // `run(kernel)` (a runner of passes taking the kernel form).
 struct FormResults {
   PassResult scalar, lanes8, lanes16, lanes1, dispatched;

@@ -1,11 +1,11 @@
 #pragma once
 // Contacts in lanes (compute/pair_lanes.hpp): how many contacts one work item of the pair kernel
 // takes on an execution space, and the branch-free select its lanes use.
-// Host backends: a block of 8 contacts per work item (16 in float with 512-bit vectors), whose middle
-// loop the host compiler turns into SIMD instructions of the width the build allows (2 doubles
-// with SSE4.1, 4 with AVX2, 8 with AVX-512). No intrinsics and no `omp simd` (its lowering moves each lane's small vectors
-// into strided arrays the vectoriser cannot store). GPUs: one lane, i.e. one contact per thread,
-// the same source.
+// Host backends: a block of 8 contacts per work item (16 in float with 512-bit vectors), whose
+// middle loop the host compiler turns into SIMD instructions of the width the build allows (2
+// doubles with SSE4.1, 4 with AVX2, 8 with AVX-512). No intrinsics and no `omp simd` (its lowering
+// moves each lane's small vectors into strided arrays the vectoriser cannot store). GPUs: one
+// lane, i.e. one contact per thread, the same source.
 // g++ 12 vectorises the loop only where the target has 64-bit integer compares and blends (x86:
 // SSE4.1 and later). On the x86-64 baseline (SSE2) the loop stays scalar and measured slower
 // than the one-contact kernel (docs/performance.md, "Contacts in lanes"): there the width is 0
