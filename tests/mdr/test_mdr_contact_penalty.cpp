@@ -161,6 +161,21 @@ TEMPLATE_LIST_TEST_CASE("contact penalty: a triangle's longest side in closed fo
       CHECK(w[0] == Approx(1.0 - logistic(alpha)).margin(tol));
     }
   }
+  SECTION("a tie for the longest side: the larger pair key takes the term, in either orientation") {
+    // |ac| = |bc| to the last bit (c above the middle of ab) and longer than |ab|: the triangles'
+    // lanes leave the tie to the ids (the brute force's rule); the angle at b (or a) is the same
+    // for both sides
+    const double h = 0.9 * L;
+    const Scene s = triangle(R, 0.9 * L, h);
+    for (const auto& pairs : {std::vector<std::array<int, 2>>{{0, 1}, {0, 2}, {1, 2}},
+                              std::vector<std::array<int, 2>>{{1, 0}, {2, 0}, {2, 1}}}) {
+      const auto w = weights<T, D>(s, pairs);
+      const auto ref = brute_force(s, pairs, 0.0);
+      CHECK(w[0] == 1.0);                   // ab: the shortest side
+      CHECK((w[1] < 1.0) != (w[2] < 1.0));  // one of the tied sides, not both
+      for (int k = 0; k < 3; ++k) CHECK(w[k] == Approx(ref[k]).margin(tol));
+    }
+  }
   SECTION("no mutual overlap: no weight") {
     // c touches neither end (h large), or a and b apart (L > 2R) with c touching both
     CHECK(weights<T, D>(triangle(R, L, 1.8 * R), {{0, 1}, {0, 2}, {1, 2}})[0] == 1.0);
