@@ -312,3 +312,83 @@ TEMPLATE_LIST_TEST_CASE("MDR side: without the stiffness, the same force, width 
   check_side_without_stiffness<D, T, false>(0.0);
   check_side_without_stiffness<D, T, true>(0.05);  // adhesion: the tension branch below delta_p
 }
+
+// The stored plastic shape (MdrSideState::shape_*): below delta_max at the radius it was computed
+// for, a yielded side takes its shape from the state instead of recomputing it. Along a path
+// through yield, plastic loading, unloading, reloading and a growth of R (delta_max shifts by (19)
+// and the key moves), every result and the advanced state must be bit for bit those of a state
+// whose store is emptied before each step (shape_R = 0: recomputed every time), with and without
+// the stiffness. And the store must be what the hits read: with its A scaled, exactly the steps
+// predicted to hit (same R, same delta_max, unloading or without the stiffness) change their
+// delta_1D^e (A/2 + (delta - delta_max)/r, (35); the force is 0 below delta_p, so not the force).
+template <class D, class T>
+void check_stored_shape(bool with_stiffness) {
+  const double R0 = 1e-3;
+  const auto c = side_constants<T>(1e8, kNu, 5e5);  // E/Y 200
+  std::vector<double> path, radius;
+  for (int k = 1; k <= 40; ++k) path.push_back(k * 2e-4 * R0);     // elastic, yield, plastic loading
+  for (int k = 39; k >= 10; --k) path.push_back(k * 1.9e-4 * R0);  // unloading
+  for (int k = 10; k <= 30; ++k) path.push_back(k * 2.1e-4 * R0);  // reloading below delta_max
+  const int grown_from = static_cast<int>(path.size());
+  for (int k = 30; k >= 20; --k) path.push_back(k * 2.1e-4 * R0);  // unloading at a grown radius
+  const int n = static_cast<int>(path.size());
+  for (int k = 0; k < n; ++k) radius.push_back(k < grown_from ? R0 : R0 * 1.002);
+  Kokkos::View<T*, D> dv("path", n), rv("radius", n);
+  auto hd = Kokkos::create_mirror_view(dv);
+  auto hr = Kokkos::create_mirror_view(rv);
+  for (int k = 0; k < n; ++k) {
+    hd(k) = T(path[k]);
+    hr(k) = T(radius[k]);
+  }
+  Kokkos::deep_copy(dv, hd);
+  Kokkos::deep_copy(rv, hr);
+  // differing results, predicted hits, probes whose delta_1D^e changed on a predicted hit / a miss
+  Kokkos::View<int*, D> count("count", 4);
+  const T R0t = T(R0);
+  Kokkos::parallel_for(
+      "mdr_test::stored_shape", Kokkos::RangePolicy<typename D::execution_space>(0, 1), KOKKOS_LAMBDA(int) {
+        MdrSideState<T> s_kept, s_fresh;
+        for (int k = 0; k < n; ++k) {
+          const T R = rv(k), growth = R - R0t, delta = dv(k);
+          // the step's delta_max, (19): loading moves it (and misses the store)
+          const bool loading = delta - growth >= s_kept.delta_o_max;
+          const T delta_max = (loading ? delta - growth : s_kept.delta_o_max) + growth;
+          const bool hit = s_kept.yielded != T(0) && s_kept.shape_R == R && s_kept.shape_delta_max == delta_max &&
+                           !(with_stiffness && loading);
+          MdrSideState<T> s_probe = s_kept;
+          s_probe.shape_A *= T(1.5);
+          s_fresh.shape_R = T(0);
+          const MdrSideResult<T> kept =
+              mdr_side_force<true, false>(c, T(0), T(1), delta, R, growth, s_kept, T(1), with_stiffness);
+          const MdrSideResult<T> fresh =
+              mdr_side_force<true, false>(c, T(0), T(1), delta, R, growth, s_fresh, T(1), with_stiffness);
+          const MdrSideResult<T> probe =
+              mdr_side_force<true, false>(c, T(0), T(1), delta, R, growth, s_probe, T(1), with_stiffness);
+          const bool same = kept.F == fresh.F && kept.a == fresh.a && kept.area == fresh.area && kept.A == fresh.A &&
+                            kept.B == fresh.B && kept.d1De == fresh.d1De && kept.delta_max == fresh.delta_max &&
+                            kept.stiffness == fresh.stiffness && kept.plastic == fresh.plastic &&
+                            kept.loading == fresh.loading && kept.ratio_floored == fresh.ratio_floored &&
+                            s_kept.delta_p == s_fresh.delta_p && s_kept.delta_o_max == s_fresh.delta_o_max &&
+                            s_kept.yielded == s_fresh.yielded && s_kept.c_A == s_fresh.c_A &&
+                            s_kept.shape_A == s_fresh.shape_A && s_kept.shape_a_max == s_fresh.shape_a_max &&
+                            s_kept.shape_ratio == s_fresh.shape_ratio;
+          if (!same) count(0) += 1;
+          if (hit) count(1) += 1;
+          if (probe.d1De != kept.d1De) count(hit ? 2 : 3) += 1;
+        }
+      });
+  const auto h = test::to_host(count);
+  INFO("with the stiffness: " << with_stiffness << ", predicted hits " << h(1));
+  CHECK(h(0) == 0);
+  CHECK(h(1) >= 50);    // the unloading and reloading steps below delta_max (61 of them)
+  CHECK(h(2) == h(1));  // every predicted hit read the stored A ...
+  CHECK(h(3) == 0);     // ... and no other step did
+}
+
+TEMPLATE_LIST_TEST_CASE("MDR side: the stored plastic shape gives a fresh shape's bits, and the hits read it",
+                        "[mdr][side]", BackendsAndScalars) {
+  using D = typename TestType::device;
+  using T = typename TestType::scalar;
+  check_stored_shape<D, T>(true);
+  check_stored_shape<D, T>(false);
+}

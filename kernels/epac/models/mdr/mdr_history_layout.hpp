@@ -18,8 +18,9 @@ struct MdrPairFields {
   static constexpr int count = Eff::plasticity ? 4 : 0;
 };
 
-// Side columns, offsets from the side's first column (MdrSideState's fields).
-template <class Eff>
+// Side columns, offsets from the side's first column (MdrSideState's fields). StoresShape: the
+// plastic shape's columns (Mdr::stores_shape: with plasticity, on host backends).
+template <class Eff, bool StoresShape = Eff::plasticity>
 struct MdrSideFields {
   // with plasticity
   static constexpr int delta_o_max = 0;
@@ -40,7 +41,15 @@ struct MdrSideFields {
   static constexpr int bulk_delta_bulk = bulk_delta_last + 2;
   static constexpr int bulk_area_w = bulk_delta_last + 3;
   static constexpr int bulk_count = Eff::bulk_response ? 4 : 0;
-  static constexpr int count = plastic_count + adhesion_count + growth_count + bulk_count;
+  // with plasticity on host backends: the stored plastic shape (MdrSideState::shape_*,
+  // detail/mdr_side_force.hpp)
+  static constexpr int shape_delta_max = plastic_count + adhesion_count + growth_count + bulk_count;
+  static constexpr int shape_R = shape_delta_max + 1;
+  static constexpr int shape_A = shape_delta_max + 2;
+  static constexpr int shape_a_max = shape_delta_max + 3;
+  static constexpr int shape_ratio = shape_delta_max + 4;
+  static constexpr int shape_count = (Eff::plasticity && StoresShape) ? 5 : 0;
+  static constexpr int count = plastic_count + adhesion_count + growth_count + bulk_count + shape_count;
 };
 
 }  // namespace epac

@@ -68,6 +68,7 @@
 #include <epac/state/particles.hpp>
 
 #include <array>
+#include <type_traits>
 #include <vector>
 
 namespace epac {
@@ -100,8 +101,14 @@ struct Mdr {
   static constexpr bool uses_side_order = true;  // sides ordered by global id (g.i_is_first)
 
   // --- history layout: [pair fields][side 0][side 1] (mdr_history_layout.hpp) ---
+  // The plastic shape kept in the history (MdrSideState::shape_*: 5 fields per side) on host
+  // backends, where it saves each unloading side an exp, two roots and two divisions (the fcc
+  // hold: 0.82-0.85 of the step with plasticity, 0.94-0.96 as LAMMPS runs it, docs/performance.md);
+  // GPUs recompute it rather than move 80 more bytes per contact.
+  static constexpr bool stores_shape =
+      Eff::plasticity && std::is_same<typename Device::memory_space, Kokkos::HostSpace>::value;
   using PairField = MdrPairFields<Eff>;
-  using SideField = MdrSideFields<Eff>;
+  using SideField = MdrSideFields<Eff, stores_shape>;
   static constexpr int kPlasticFields = SideField::plastic_count;    // delta_o,max, yielded, c_A, delta_p
   static constexpr int kAdhesionFields = SideField::adhesion_count;  // a
   static constexpr int kGrowthFields = SideField::growth_count;      // delta_o,prev, eps_c,prev
@@ -145,6 +152,7 @@ struct Mdr {
       st.yielded = row(b + SideField::yielded);
       st.c_A = row(b + SideField::c_A);
       st.delta_p = row(b + SideField::delta_p);
+      if (stores_shape) load_shape(row, b, st);
     }
     if (Eff::adhesion) st.a_adh = row(b + SideField::a_adh);
     if (Eff::radius_growth) {
@@ -160,12 +168,30 @@ struct Mdr {
       row(b + SideField::yielded) = st.yielded;
       row(b + SideField::c_A) = st.c_A;
       row(b + SideField::delta_p) = st.delta_p;
+      if (stores_shape) store_shape(row, b, st);
     }
     if (Eff::adhesion) row(b + SideField::a_adh) = st.a_adh;
     if (Eff::radius_growth) {
       row(b + SideField::delta_o_prev) = st.delta_o_prev;
       row(b + SideField::eps_prev) = st.eps_prev;
     }
+  }
+
+  // The stored plastic shape (MdrSideState::shape_*), where stores_shape.
+  static KOKKOS_FORCEINLINE_FUNCTION void load_shape(const HistoryRow<T, Device>& row, int b, MdrSideState<T>& st) {
+    st.shape_delta_max = row(b + SideField::shape_delta_max);
+    st.shape_R = row(b + SideField::shape_R);
+    st.shape_A = row(b + SideField::shape_A);
+    st.shape_a_max = row(b + SideField::shape_a_max);
+    st.shape_ratio = row(b + SideField::shape_ratio);
+  }
+  static KOKKOS_FORCEINLINE_FUNCTION void store_shape(const HistoryRow<T, Device>& row, int b,
+                                                      const MdrSideState<T>& st) {
+    row(b + SideField::shape_delta_max) = st.shape_delta_max;
+    row(b + SideField::shape_R) = st.shape_R;
+    row(b + SideField::shape_A) = st.shape_A;
+    row(b + SideField::shape_a_max) = st.shape_a_max;
+    row(b + SideField::shape_ratio) = st.shape_ratio;
   }
 
   // Evaluates the contact; Write = true advances history and adds growth terms (the force pass),
@@ -275,6 +301,9 @@ struct Mdr {
         row(b + SideField::c_A) = st.c_A;
       }
       if (plastic) row(b + SideField::delta_p) = st.delta_p;
+      // a new shape whenever its key moved (the same key holds the same shape)
+      if (stores_shape && (st.shape_R != was.shape_R || st.shape_delta_max != was.shape_delta_max))
+        store_shape(row, b, st);
     }
     if (Eff::adhesion && st.a_adh != was.a_adh) row(b + SideField::a_adh) = st.a_adh;
     if (Eff::radius_growth) {
@@ -513,9 +542,9 @@ struct Mdr {
     }
   }
 
-  // load_side for the start of a step, reading only what every regime needs: c_A once plastic,
-  // delta_p for outputs only (a force pass reads it where the pair split needs it, and the plastic
-  // regime recomputes it); a_adh: the value releases() loaded.
+  // load_side for the start of a step, reading only what every regime needs: once plastic, c_A,
+  // the stored shape and its delta_p (which the plastic regime recomputes with a new shape); an
+  // elastic side's delta_p for outputs only; a_adh: the value releases() loaded.
   template <bool Write>
   static KOKKOS_FORCEINLINE_FUNCTION MdrSideState<T> load_side_at_step_start(const HistoryRow<T, Device>& row, int s,
                                                                              T a_adh) {
@@ -524,8 +553,13 @@ struct Mdr {
     if (Eff::plasticity) {
       st.delta_o_max = row(b + SideField::delta_o_max);
       st.yielded = row(b + SideField::yielded);
-      if (st.yielded != T(0)) st.c_A = row(b + SideField::c_A);  // read only once plastic
-      if (!Write) st.delta_p = row(b + SideField::delta_p);      // outputs report it
+      if (st.yielded != T(0)) {  // read only once plastic
+        st.c_A = row(b + SideField::c_A);
+        st.delta_p = row(b + SideField::delta_p);
+        if (stores_shape) load_shape(row, b, st);
+      } else if (!Write) {
+        st.delta_p = row(b + SideField::delta_p);  // outputs report it
+      }
     }
     if (Eff::adhesion) st.a_adh = a_adh;
     if (Eff::radius_growth) {

@@ -35,6 +35,12 @@ struct MdrSideState {
   T a_adh = 0;         // adhesive contact radius (Section 6)
   T delta_o_prev = 0;  // delta_o at the last step (radius growth, (37))
   T eps_prev = 0;      // this side's Christoffersen term at the last step ((37)-(38))
+  // The plastic shape of the last evaluation that computed one and the (delta_max, R) it was
+  // computed for (shape_R = 0: none; R > 0). Below delta_max the ellipse of delta_max is fixed,
+  // so while neither moves, unloading and reloading take it from here, the same bits, instead of
+  // its exp, two square roots and two divisions (the stored delta_p is that shape's).
+  // shape_ratio < 0: the ratio was floored; its magnitude is the ratio.
+  T shape_delta_max = 0, shape_R = 0, shape_A = 0, shape_a_max = 0, shape_ratio = 0;
 };
 
 // The ellipse of the fully-plastic regime at (delta_max, R, c_A).
@@ -76,6 +82,31 @@ KOKKOS_FORCEINLINE_FUNCTION MdrPlasticShape<T> mdr_plastic_shape(const MdrSideCo
   s.ratio = s.ratio_floored ? mdr_min_recovery_ratio<T>() : r;
   s.delta_p = delta_max - half * s.ratio;
   return s;
+}
+
+// The shape s stores (valid where s.shape_R == R and s.shape_delta_max == delta_max): A, a_max,
+// the ratio and delta_p as mdr_plastic_shape gave them; p_Y is not stored (0 here: only plastic
+// loading's stiffness reads it, and that recomputes the shape).
+template <class T>
+KOKKOS_FORCEINLINE_FUNCTION MdrPlasticShape<T> mdr_stored_shape(const MdrSideState<T>& s) {
+  MdrPlasticShape<T> sh;
+  sh.A = s.shape_A;
+  sh.a_max = s.shape_a_max;
+  sh.B = T(2) * s.shape_a_max;  // (28), as mdr_plastic_shape
+  sh.p_Y = T(0);
+  sh.ratio_floored = s.shape_ratio < T(0);
+  sh.ratio = math::fabs(s.shape_ratio);
+  sh.delta_p = s.delta_p;
+  return sh;
+}
+
+template <class T>
+KOKKOS_FORCEINLINE_FUNCTION void mdr_store_shape(MdrSideState<T>& s, const MdrPlasticShape<T>& sh, T delta_max, T R) {
+  s.shape_delta_max = delta_max;
+  s.shape_R = R;
+  s.shape_A = sh.A;
+  s.shape_a_max = sh.a_max;
+  s.shape_ratio = sh.ratio_floored ? -sh.ratio : sh.ratio;
 }
 
 // Without inv_R (tests, host tools).
@@ -159,10 +190,19 @@ KOKKOS_FORCEINLINE_FUNCTION MdrSideResult<T> mdr_side_force(const MdrSideConstan
   T d1De_per_delta = T(1);  // d delta_1D^e / d delta: 1/r below delta_max ((35)), 1 elastic
   T loading_stiffness = T(0);
   if (Plasticity && s.yielded != T(0)) {
-    const MdrPlasticShape<T> sh = mdr_plastic_shape(c, delta_max, R, T(1) / R, s.c_A);  // R > 0
+    // the stored shape where (delta_max, R) are those it was computed for (c_A is fixed once
+    // yielded), except on loading with the stiffness, which needs p_Y
+    const bool stored = s.shape_R == R && s.shape_delta_max == delta_max && !(with_stiffness && out.loading);
+    MdrPlasticShape<T> sh;
+    if (stored) {
+      sh = mdr_stored_shape(s);
+    } else {
+      sh = mdr_plastic_shape(c, delta_max, R, T(1) / R, s.c_A);  // R > 0
+      mdr_store_shape(s, sh, delta_max, R);
+    }
     out.plastic = true;
-    if (with_stiffness) {
-      d1De_per_delta = T(1) / sh.ratio;  // ratio >= mdr_min_recovery_ratio > 0
+    if (with_stiffness) d1De_per_delta = T(1) / sh.ratio;  // ratio >= mdr_min_recovery_ratio > 0
+    if (with_stiffness && out.loading) {
       // plastic loading: F = pi p_Y a_max^2 ((30) at d = A/2 with (28)); p_Y' = -4.4/R (p_Y - Y) by
       // (16)+(21), (a_max^2)' = 2 (R - delta) up to the equator ((36))
       loading_stiffness =
