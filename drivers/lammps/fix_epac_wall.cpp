@@ -262,11 +262,19 @@ void FixEpacWall::unpack_restart(int nlocal, int nth) {
   double** extra = atom->extra;
   int m = 0;
   for (int k = 0; k < nth; k++) m += static_cast<int>(extra[nlocal][m]);
-  m++;
+  const int total = static_cast<int>(extra[nlocal][m++]);  // pack_restart's buf[0]
   ncontact_[nlocal] = static_cast<int>(ubuf(extra[nlocal][m++]).i);
+  // the slots per contact of the build that wrote the file (kMaxHistory was 32 before the stored
+  // MDR shape): its fields are read into the first slots, the rest zeroed (a law whose own layout
+  // changed, as MDR's did then, does not carry over)
+  const int written = ncontact_[nlocal] > 0 ? (total - 2) / ncontact_[nlocal] - 1 : kMaxHistory;
   for (int k = 0; k < ncontact_[nlocal]; k++) {
     walls_[nlocal][k] = static_cast<int>(ubuf(extra[nlocal][m++]).i);
-    for (int q = 0; q < kMaxHistory; q++) history_[nlocal][k][q] = extra[nlocal][m++];
+    for (int q = 0; q < written; q++) {
+      const double v = extra[nlocal][m++];
+      if (q < kMaxHistory) history_[nlocal][k][q] = v;
+    }
+    for (int q = written; q < kMaxHistory; q++) history_[nlocal][k][q] = 0.0;
   }
 }
 

@@ -28,7 +28,9 @@ namespace LAMMPS_NS {
 
 class FixEpacWall : public Fix {
  public:
-  static constexpr int kMaxHistory = 32;  // history fields per contact (MDR with every effect, rolling and Part II: 32)
+  // history fields per contact: MDR with every effect, rolling and Part II, on host backends (with
+  // its stored plastic shape, 5 fields per side): 42
+  static constexpr int kMaxHistory = 42;
 
   // One touching surface of one local atom in this pass.
   struct Contact {
