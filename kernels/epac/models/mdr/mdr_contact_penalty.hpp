@@ -155,12 +155,7 @@ struct MdrContactPenalty {
           Kokkos::atomic_increment(&off(first(k) + 1));
           Kokkos::atomic_increment(&off(second(k) + 1));
         });
-    Kokkos::parallel_scan(
-        "epac::mdr_penalty_offsets", Kokkos::RangePolicy<exec>(0, n + 1),
-        KOKKOS_LAMBDA(int q, int& run, const bool final) {
-          run += off(q);
-          if (final) off(q) = run;
-        });
+    offsets_from_counts(off, n, "epac::mdr_penalty_offsets");
     Kokkos::parallel_for(
         "epac::mdr_penalty_cursor", Kokkos::RangePolicy<exec>(0, n), KOKKOS_LAMBDA(int q) { cur(q) = off(q); });
     Kokkos::parallel_for(
