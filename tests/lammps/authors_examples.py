@@ -8,6 +8,8 @@ import subprocess
 import sys
 import tempfile
 
+from mpi_session import run_lammps
+
 DEFAULT_LMP = os.path.expanduser("~/.cache/epac/lammps/4Feb2025/build/lmp")
 DEFAULT_EXAMPLES = os.path.expanduser("~/.cache/epac/lammps/4Feb2025/src/lammps-4Feb2025/examples/granular")
 
@@ -142,7 +144,7 @@ def run_example(args, label, text, data, ranks=1, preload=None):
     env = dict(os.environ, OMP_NUM_THREADS="1")
     if preload:
         env["LD_PRELOAD"] = preload
-    r = subprocess.run(cmd, cwd=work, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    r = run_lammps(cmd, work, env)
     if r.returncode != 0:
         log = os.path.join(work, "log.lammps")
         tail = open(log).read()[-3000:] if os.path.exists(log) else ""

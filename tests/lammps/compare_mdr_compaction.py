@@ -25,9 +25,10 @@ or when the ranks differ by more than 1e-10.
 """
 import argparse
 import os
-import subprocess
 import sys
 import tempfile
+
+from mpi_session import run_lammps
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 INPUT = os.path.join(HERE, "in.mdr_compaction")
@@ -45,7 +46,7 @@ def run(args, label, style, coeffs, extra, workdir, ranks=1):
             "-var", "nsteps", str(args.nsteps), "-var", "nhold", str(args.nhold),
             "-var", "onerun", str(args.onerun)] + extra
     env = dict(os.environ, OMP_NUM_THREADS="1")
-    r = subprocess.run(cmd, env=env, cwd=workdir, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    r = run_lammps(cmd, workdir, env)
     if r.returncode != 0:
         log = open(os.path.join(workdir, label + ".log")).read() if os.path.exists(os.path.join(workdir, label + ".log")) else ""
         sys.exit(f"{label}: lmp failed ({r.returncode}):\n{r.stdout[-3000:]}\n{log[-3000:]}")

@@ -16,9 +16,10 @@ same steps: max |F_epac - F_lammps| / peak |F_lammps|.
 """
 import argparse
 import os
-import subprocess
 import sys
 import tempfile
+
+from mpi_session import run_lammps
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 INPUT = os.path.join(HERE, "in.mdr_pair")
@@ -32,7 +33,7 @@ def run(args, workdir, label, variables):
     for k, v in variables:
         cmd += ["-var", k, v]
     env = dict(os.environ, OMP_NUM_THREADS="1", OMP_PROC_BIND="false")
-    r = subprocess.run(cmd, env=env, cwd=workdir, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    r = run_lammps(cmd, workdir, env)
     if r.returncode != 0:
         sys.exit(f"{label}: lmp failed:\n{r.stdout[-3000:]}")
     rows = {}

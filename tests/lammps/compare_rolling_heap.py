@@ -22,9 +22,11 @@ import argparse
 import math
 import os
 import shutil
-import subprocess
 import sys
+
 from concurrent.futures import ThreadPoolExecutor
+
+from mpi_session import run_lammps
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 INPUT = os.path.join(HERE, "in.rolling_heap")
@@ -38,7 +40,7 @@ def lmp(args, tag, variables):
     for k, v in variables:
         cmd += ["-var", k, v]
     env = dict(os.environ, OMP_NUM_THREADS="1", OMP_PROC_BIND="false")
-    r = subprocess.run(cmd, cwd=args.workdir, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    r = run_lammps(cmd, args.workdir, env)
     log_path = os.path.join(args.workdir, tag + ".log")
     log = open(log_path).read() if os.path.exists(log_path) else ""
     if r.returncode != 0 or "ERROR" in log:

@@ -38,8 +38,9 @@ import math
 import os
 import re
 import shutil
-import subprocess
 import sys
+
+from mpi_session import run_lammps
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 SCENE = os.path.join(HERE, "in.settling_check")
@@ -69,7 +70,7 @@ def lmp(args, ranks=1, variables=(), infile=SCENE, tag="run"):
     for k, v in variables:
         cmd += ["-var", k, v]
     env = dict(os.environ, OMP_NUM_THREADS="1", OMP_PROC_BIND="false")
-    r = subprocess.run(cmd, cwd=args.work, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    r = run_lammps(cmd, args.work, env)
     log = open(os.path.join(args.work, tag + ".log")).read() if os.path.exists(os.path.join(args.work, tag + ".log")) else ""
     if r.returncode != 0 or "ERROR" in log:
         print(" ".join(cmd))
