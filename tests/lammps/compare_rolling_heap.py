@@ -23,7 +23,6 @@ import math
 import os
 import shutil
 import sys
-
 from concurrent.futures import ThreadPoolExecutor
 
 from mpi_session import run_lammps

@@ -6,7 +6,6 @@ the second mkdir then fails: "Directory: /tmp/ompi.vm.0  Error: File exists", or
 failed (seen in CI, `ctest -j 2`; open-mpi/ompi#8510). Each run here gets its own, short
 temporary directory (TMPDIR, and the session base that Open MPI reads) and removes it after.
 """
-import os
 import shutil
 import subprocess
 import tempfile
