@@ -1,4 +1,4 @@
-// core/lane_math.hpp: lane_exp and lane_acos against libm in ulps over their domains, at the
+// core/lane_math.hpp: lane_exp, lane_acos and lane_two_asin_sqrt against libm in ulps over their domains, at the
 // ends of the domains (clamps, overflow, underflow, NaN), at the points the contact penalty relies
 // on (acos(0) = pi/2 exactly, so that a right angle weighs exactly 1/2), and on a device, where
 // the same source runs one value per thread.
@@ -91,6 +91,48 @@ TEST_CASE("lane_acos: within 2 ulp of libm's acos on [-1, 1], clamped outside", 
   CHECK(lane_acos(7.0) == 0.0);
   CHECK(std::isnan(lane_acos(std::numeric_limits<double>::quiet_NaN())));
   CHECK(lane_acos(0.25f) == Approx(std::acos(0.25)).epsilon(1.2e-7));
+}
+
+TEST_CASE("lane_two_asin_sqrt: within 2 ulp of 2 asin(sqrt x) on [0, 1], clamped outside", "[core][lane_math]") {
+  // reference in long double, from the exact x: 2 asin(sqrt x) below 1/2, pi - 2 asin(sqrt(1 - x))
+  // above (1 - x is exact there; 2 asin(sqrt x) of a rounded root is ill-conditioned near x = 1)
+  const auto ref_of = [](double x) {
+    const long double xl = x;
+    return x <= 0.5 ? 2.0L * std::asin(std::sqrt(xl))
+                    : 3.14159265358979323846264338327950288L - 2.0L * std::asin(std::sqrt(1.0L - xl));
+  };
+  std::mt19937_64 rng(9);
+  std::uniform_real_distribution<double> all(0.0, 1.0), tiny(0.0, 1e-6), q1(0.25 - 1e-9, 0.25 + 1e-9),
+      q3(0.75 - 1e-9, 0.75 + 1e-9), one(1.0 - 1e-6, 1.0);
+  double worst = 0.0, at = 0.0;
+  for (int i = 0; i < 3000000; ++i) {
+    double x =
+        i % 5 == 0 ? all(rng) : (i % 5 == 1 ? tiny(rng) : (i % 5 == 2 ? q1(rng) : (i % 5 == 3 ? q3(rng) : one(rng))));
+    if (i % 7 == 0) x = std::ldexp(all(rng), -int(rng() % 1000));  // down to the subnormals
+    const long double ref = ref_of(x);
+    if (ref == 0.0L) continue;
+    const double u = ulps(lane_two_asin_sqrt(x, std::sqrt(x), std::sqrt(1.0 - x)), double(ref));
+    if (u > worst) {
+      worst = u;
+      at = x;
+    }
+  }
+  INFO("worst " << worst << " ulp at x = " << at);
+  CHECK(worst <= 2.0);
+  CHECK(lane_two_asin_sqrt(0.0, 0.0, 1.0) == 0.0);
+  CHECK(lane_two_asin_sqrt(1.0, 1.0, 0.0) == constants<double>::pi);
+  CHECK(lane_two_asin_sqrt(0.5, std::sqrt(0.5), std::sqrt(0.5)) == 0.5 * constants<double>::pi);
+  CHECK(lane_two_asin_sqrt(0.25, 0.5, std::sqrt(0.75)) == Approx(2.0 * std::asin(0.5)).epsilon(4.5e-16));
+  CHECK(lane_two_asin_sqrt(0.75, std::sqrt(0.75), 0.5) ==
+        Approx(constants<double>::pi - 2.0 * std::asin(0.5)).epsilon(4.5e-16));
+  // tiny x: 2 sqrt(x) to the last bit, where acos(1 - 2x) would have rounded x away
+  CHECK(lane_two_asin_sqrt(1e-300, 1e-150, 1.0) == 2e-150);
+  // the clamp: an x an ulp outside [0, 1] with the roots of the clamped x
+  CHECK(lane_two_asin_sqrt(1.0000000000000002, 1.0, 0.0) == constants<double>::pi);
+  CHECK(lane_two_asin_sqrt(-1e-300, 0.0, 1.0) == 0.0);
+  CHECK(std::isnan(lane_two_asin_sqrt(std::numeric_limits<double>::quiet_NaN(), 0.0, 1.0)));
+  CHECK(lane_two_asin_sqrt(0.3f, std::sqrt(0.3f), std::sqrt(0.7f)) ==
+        Approx(2.0 * std::asin(std::sqrt(0.3))).epsilon(1.2e-7));
 }
 
 TEMPLATE_LIST_TEST_CASE("lane_exp and lane_acos: a device gives the host's values", "[core][lane_math]",

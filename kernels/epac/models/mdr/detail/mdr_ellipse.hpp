@@ -4,27 +4,32 @@
 // needs from the ellipse: the force at a depth (30), the gap profile g_1D (44) and the contact
 // half-width at a depth. Elastic regime: A = 4R, B = 2R (31); fully plastic: (28).
 #include <epac/core/kokkos_compat.hpp>
+#include <epac/core/lane_math.hpp>
+#include <epac/core/simd_lanes.hpp>
 
 namespace epac {
 
 // theta - sin(theta) cos(theta), the bracket of (30) written with theta = acos(1 - 2 x),
 // x = depth / A: then (1 - 2x) = cos(theta) and sqrt(4x - 4x^2) = sin(theta). For small theta the
 // two terms cancel (error ~ eps/theta^2), so a series is used there (it is ~ (2/3) theta^3).
+// The series of the bracket: sum_{k>=1} (-1)^(k+1) 2^(2k) theta^(2k+1) / (2k+1)!, through k = 7:
+// truncation below 1e-17 relative for theta < 0.25.
+template <class T>
+KOKKOS_FORCEINLINE_FUNCTION T mdr_ellipse_bracket_series(T th) {
+  const T t2 = th * th;
+  T s = T(16384.0 / 1307674368000.0);      // k = 7
+  s = T(-4096.0 / 6227020800.0) + t2 * s;  // k = 6
+  s = T(1024.0 / 39916800.0) + t2 * s;     // k = 5
+  s = T(-256.0 / 362880.0) + t2 * s;       // k = 4
+  s = T(64.0 / 5040.0) + t2 * s;           // k = 3
+  s = T(-16.0 / 120.0) + t2 * s;           // k = 2
+  s = T(4.0 / 6.0) + t2 * s;               // k = 1
+  return s * t2 * th;
+}
+
 template <class T>
 KOKKOS_FORCEINLINE_FUNCTION T mdr_ellipse_bracket(T th) {
-  if (th < T(0.25)) {
-    // sum_{k>=1} (-1)^(k+1) 2^(2k) theta^(2k+1) / (2k+1)!, through k = 7: truncation below 1e-17
-    // relative for theta < 0.25.
-    const T t2 = th * th;
-    T s = T(16384.0 / 1307674368000.0);      // k = 7
-    s = T(-4096.0 / 6227020800.0) + t2 * s;  // k = 6
-    s = T(1024.0 / 39916800.0) + t2 * s;     // k = 5
-    s = T(-256.0 / 362880.0) + t2 * s;       // k = 4
-    s = T(64.0 / 5040.0) + t2 * s;           // k = 3
-    s = T(-16.0 / 120.0) + t2 * s;           // k = 2
-    s = T(4.0 / 6.0) + t2 * s;               // k = 1
-    return s * t2 * th;
-  }
+  if (th < T(0.25)) return mdr_ellipse_bracket_series(th);
   return th - math::sin(th) * math::cos(th);
 }
 
@@ -40,6 +45,21 @@ KOKKOS_FORCEINLINE_FUNCTION T mdr_ellipse_bracket_of_depth(T x) {
   const T th = T(2) * math::asin(sx);
   if (th < T(0.25)) return mdr_ellipse_bracket(th);  // series: the difference below cancels
   return th - T(2) * (T(1) - T(2) * x) * sx * math::sqrt_nonneg(T(1) - x);
+}
+
+// mdr_ellipse_bracket_of_depth without branches, for lanes (detail/mdr_side_lane.hpp): every
+// branch computed and selected, theta by lane_two_asin_sqrt (core/lane_math.hpp) instead of libm's
+// asin, so it agrees with the scalar form to a few ulp, not bit for bit (in scalar code libm's asin
+// is the faster: docs/performance.md). Domain: x in [0, 1]; outside, the roots see x clamped.
+template <class T>
+KOKKOS_FORCEINLINE_FUNCTION T mdr_ellipse_bracket_of_depth_lane(T x) {
+  const T xc = lane_min(lane_max(x, T(0)), T(1));
+  const T sx = math::sqrt(xc);
+  const T s1x = math::sqrt(T(1) - xc);  // xc <= 1
+  const T th = lane_two_asin_sqrt(xc, sx, s1x);
+  const T direct = th - T(2) * (T(1) - T(2) * xc) * sx * s1x;
+  return lane_select(xc == T(0.5), T(0.5) * constants<T>::pi,
+                     lane_select(th < T(0.25), mdr_ellipse_bracket_series(th), direct));
 }
 
 // MDR (30): force of the ellipse pressed to depth d into the springs.
