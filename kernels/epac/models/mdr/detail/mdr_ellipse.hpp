@@ -9,11 +9,8 @@
 
 namespace epac {
 
-// theta - sin(theta) cos(theta), the bracket of (30) written with theta = acos(1 - 2 x),
-// x = depth / A: then (1 - 2x) = cos(theta) and sqrt(4x - 4x^2) = sin(theta). For small theta the
-// two terms cancel (error ~ eps/theta^2), so a series is used there (it is ~ (2/3) theta^3).
-// The series of the bracket: sum_{k>=1} (-1)^(k+1) 2^(2k) theta^(2k+1) / (2k+1)!, through k = 7:
-// truncation below 1e-17 relative for theta < 0.25.
+// The series of the bracket below: sum_{k>=1} (-1)^(k+1) 2^(2k) theta^(2k+1) / (2k+1)!, through
+// k = 7: truncation below 1e-17 relative for theta < 0.25.
 template <class T>
 KOKKOS_FORCEINLINE_FUNCTION T mdr_ellipse_bracket_series(T th) {
   const T t2 = th * th;
@@ -27,6 +24,9 @@ KOKKOS_FORCEINLINE_FUNCTION T mdr_ellipse_bracket_series(T th) {
   return s * t2 * th;
 }
 
+// theta - sin(theta) cos(theta), the bracket of (30) written with theta = acos(1 - 2 x),
+// x = depth / A: then (1 - 2x) = cos(theta) and sqrt(4x - 4x^2) = sin(theta). For small theta the
+// two terms cancel (error ~ eps/theta^2), so the series is used there (it is ~ (2/3) theta^3).
 template <class T>
 KOKKOS_FORCEINLINE_FUNCTION T mdr_ellipse_bracket(T th) {
   if (th < T(0.25)) return mdr_ellipse_bracket_series(th);
