@@ -50,10 +50,10 @@ KOKKOS_FORCEINLINE_FUNCTION MdrSideLane<T> mdr_side_force_lane(const MdrSideCons
   const T delta_max = s.delta_o_max + growth;   // (19)
   const bool stored = (s.shape_R == R) & (s.shape_delta_max == delta_max);
   const bool common = (s.yielded != T(0)) & !loading & stored;
-  // the stored shape (mdr_stored_shape)
-  const T A = s.shape_A;
-  const T B = T(2) * s.shape_a_max;
-  const T ratio = lane_select(common, math::fabs(s.shape_ratio), T(1));
+  const MdrPlasticShape<T> sh = mdr_stored_shape(s);  // the one-side law's reading of the stored shape
+  const T A = sh.A;
+  const T B = sh.B;
+  const T ratio = lane_select(common, sh.ratio, T(1));  // >= mdr_min_recovery_ratio where stored
   MdrSideLane<T> out;
   out.delta_max = delta_max;
   out.d1De = T(0.5) * A + below_max / ratio;                                   // (35), as mdr_side_force
