@@ -17,6 +17,7 @@
 #include <epac/models/hertz_mindlin.hpp>
 #include <epac/models/jkr/jkr.hpp>
 #include <epac/models/linear_spring.hpp>
+#include <epac/models/mdr/mdr_model.hpp>
 #include <epac/models/nan2022/nan2022.hpp>
 
 using namespace epac;
@@ -176,14 +177,26 @@ namespace {
 // branch, detachment and re-loading after unloading.
 const double nan_schedule[] = {1.0, 1.0, 1.0, 1.035, 1.0, 0.995, 0.995, 0.9952, 0.9955, 0.996, 0.996};
 
+// A schedule's steps around the force pass (none for laws without per-particle state).
+struct NoPassSteps {
+  template <class S>
+  void setup(S&) const {}
+  template <class S, class H>
+  void before_force(bool /*last*/, const S&, const H&) const {}
+  void after_force() const {}
+};
+
 // Forces, torques and outputs of every pass, appended; the history after the last. whole_blocks:
 // the list's last entries left out so that it fills blocks of 8 exactly (the scene's list ends in
-// a part-full block).
-template <class Model, class T, class D, class Kernel>
+// a part-full block). schedule: the positions' scale of each pass; steps: what runs around each
+// force pass (setup(scene) first, before_force after the pass's positions are set).
+template <class Model, class T, class D, class Kernel, std::size_t N = 11, class Steps = NoPassSteps>
 PassResult run_schedule(const Model& model, Kernel kernel, std::vector<double>* history_before_last = nullptr,
-                        bool whole_blocks = false) {
+                        bool whole_blocks = false, const double (&schedule)[N] = nan_schedule, const Steps& steps = {},
+                        test::PairScene<T, D>* scene_after = nullptr) {
   auto s = pair_scene<T, D>(1.0, model.nmat);
   if (whole_blocks) s.c.count -= s.c.count % 8;
+  steps.setup(s);
   auto x = Kokkos::create_mirror_view(s.p.x);  // on host backends: the positions themselves
   Kokkos::deep_copy(x, s.p.x);
   const std::vector<double> x0(x.data(), x.data() + x.span());
@@ -195,22 +208,25 @@ PassResult run_schedule(const Model& model, Kernel kernel, std::vector<double>* 
     for (std::size_t e = 0; e < hv.span(); ++e) to.push_back(double(hv.data()[e]));
   };
   PassResult r;
-  const int passes = static_cast<int>(sizeof(nan_schedule) / sizeof(nan_schedule[0]));
+  const int passes = static_cast<int>(N);
   for (int pass = 0; pass < passes; ++pass) {
-    for (std::size_t e = 0; e < x.span(); ++e) x.data()[e] = x0[e] * nan_schedule[pass];
+    for (std::size_t e = 0; e < x.span(); ++e) x.data()[e] = x0[e] * schedule[pass];
     Kokkos::deep_copy(s.p.x, x);
     if (pass == passes - 1 && history_before_last) {
       auto hh = test::to_host(h.data);
       history_before_last->assign(hh.data(), hh.data() + hh.span());
     }
+    steps.before_force(pass == passes - 1, s, h);
     zero_forces(s.p);
     kernel(model, s.p, s.c, h, T(2e-7), sums, out);
+    steps.after_force();
     append(r.force, s.p.force);
     append(r.torque, s.p.torque);
     append(r.normal_force, out.normal_force);
     append(r.overlap, out.overlap);
   }
   append(r.history, h.data);
+  if (scene_after) *scene_after = s;
   return r;
 }
 
@@ -317,5 +333,168 @@ TEMPLATE_LIST_TEST_CASE("contacts in lanes: JKR's warm-started root and its rare
   }
   SECTION("no surface energy keeps the one-contact kernel") {
     CHECK_FALSE(Full::create(pair_materials<T>(0.5)).lane_form_applies());
+  }
+}
+
+namespace {
+
+// MDR as LAMMPS runs it (the side-by-side's like-with-like options): its lane form covers a pair
+// whose sides both hold below their delta_max on their stored shapes; loading, first contact,
+// separation and elastic sides take the one-contact code in the same block. A run is the driver's
+// step: the contact penalty, Part II's pre-pass, the force pass, the radius update. Each form
+// gets a model of its own (the model holds the per-particle state the passes advance).
+const double mdr_schedule[] = {1.0, 0.998, 0.997, 0.9972, 0.9975, 0.9975, 0.9973, 0.9965, 0.9978, 0.998, 0.9968};
+
+template <class T>
+MdrOptions mdr_authors_options(double psi_b) {
+  MdrOptions o;
+  o.pair_split = MdrPairSplit::geometric;
+  o.psi_b = psi_b;
+  o.contact_penalty = true;
+  o.delta_max = MdrDeltaMax::running_max;
+  o.damping = MdrDamping::authors;
+  o.friction = MdrFriction::authors;
+  o.tangential_stiffness = 2e5;
+  o.yield_onset = MdrYieldOnset::hertz_40;
+  return o;
+}
+
+struct MdrPassResult {
+  PassResult r;
+  std::vector<double> radius, psi;
+};
+
+// The driver's steps around MDR's force pass: the contact penalty and Part II's pre-pass before
+// it, the radius update after; setup binds the model to the scene's particles (R_o: their radii).
+// before_last(model, scene, history): called before the last pass's force pass.
+template <class Model, class T, class D, class BeforeLast>
+struct MdrPassSteps {
+  Model& model;
+  BeforeLast before_last;
+  void setup(test::PairScene<T, D>& s) const {
+    Kokkos::deep_copy(s.p.radius0, s.p.radius);
+    model.bind(s.p);
+  }
+  void before_force(bool last, const test::PairScene<T, D>& s, const ContactHistory<T, D>& h) const {
+    model.compute_contact_penalty(s.p, s.c);
+    model.compute_mean_surface_displacement(s.p, s.c, h, Walls<T, D>(), ContactList<D>(), ContactHistory<T, D>());
+    if (last) before_last(model, s, h);
+  }
+  void after_force() const { model.update_radii(); }
+};
+
+template <class Model, class T, class D, class Kernel, class BeforeLast>
+MdrPassResult run_mdr_schedule(const std::vector<Material>& mats, const MdrOptions& opt, Kernel kernel,
+                               BeforeLast before_last) {
+  Model model = Model::create(mats, opt);
+  const MdrPassSteps<Model, T, D, BeforeLast> steps{model, before_last};
+  test::PairScene<T, D> s;
+  MdrPassResult res;
+  res.r = run_schedule<Model, T, D>(model, kernel, nullptr, false, mdr_schedule, steps, &s);
+  auto flat = [](const auto& view) {
+    auto hv = test::to_host(view);
+    return std::vector<double>(hv.data(), hv.data() + hv.span());
+  };
+  res.radius = flat(s.p.radius);
+  res.psi = flat(model.bulk.psi);
+  return res;
+}
+
+}  // namespace
+
+namespace {
+template <class Model, class T, class D>
+void compare_mdr_lanes(const std::vector<Material>& mats, const MdrOptions& opt) {
+  if constexpr (detail::runs_in_lanes<Model>::value) {
+    CHECK(Model::create(mats, opt).lane_form_applies() == false);  // unbound: growth and Part II unread
+    // the lane form's verdict on the last pass (on a host backend: stores_shape), from the
+    // one-contact kernel's run just before its force pass, geometry as the lanes kernel takes it
+    int common = 0, rare = 0, yielded = 0;
+    auto verdict = [&](const Model& model, const test::PairScene<T, D>& s, const ContactHistory<T, D>& h) {
+      REQUIRE(model.lane_form_applies());
+      const auto pc = model.pairs(0);
+      for (int k = 0; k < s.c.count; ++k) {
+        int i = s.c.first(k), j = s.c.second(k);
+        if (s.p.gid(j) < s.p.gid(i)) std::swap(i, j);
+        T nh[Model::normal_history_size][1], sums[Model::lane_sum_count][1];
+        for (int f = 0; f < Model::normal_history_size; ++f) nh[f][0] = h.data(k, f);
+        yielded += nh[Model::side_base(0) + Model::SideField::yielded][0] != T(0);
+        const T R_i = s.p.radius(i), R_j = s.p.radius(j);
+        double dx[3], dist2 = 0;
+        for (int d = 0; d < 3; ++d) {
+          dx[d] = s.p.x(i, d) - s.p.x(j, d);
+          dist2 += dx[d] * dx[d];
+        }
+        const double delta = double(R_i) + double(R_j) - std::sqrt(dist2);
+        const LaneContact<T, int> lc{i, j, k, T(delta), R_i, R_j, R_i * R_j / (R_i + R_j)};
+        T lane_rare = T(0);
+        model.contact_lane(pc, lc, LaneColumn<T, 1>{nh, 0}, LaneColumn<T, 1>{sums, 0}, lane_rare);
+        (lane_rare != T(0) ? rare : common) += 1;
+      }
+    };
+    auto no_verdict = [](const Model&, const test::PairScene<T, D>&, const ContactHistory<T, D>&) {};
+    auto run = [&](auto kernel) { return run_mdr_schedule<Model, T, D>(mats, opt, kernel, no_verdict); };
+    const MdrPassResult scalar = run_mdr_schedule<Model, T, D>(
+        mats, opt, [](auto&&... a) { detail::pair_kernel<true>(a..., ContactForceBuffer<T, D>{}); }, verdict);
+    const MdrPassResult lanes8 = run([](auto&&... a) { detail::pair_kernel_lanes<8>(a...); });
+    const MdrPassResult lanes16 = run([](auto&&... a) { detail::pair_kernel_lanes<16>(a...); });
+    const MdrPassResult dispatched = run([](auto&&... a) { compute_pair_forces(a...); });
+    CAPTURE(common, rare, yielded);
+    CHECK(yielded >= 100);
+    CHECK(common >= 100);
+    CHECK(rare >= 10);
+    // what each psi_b is for: bulk overlaps (psi_b 1), radius growth (psi_b 0.5)
+    double bulk_max = 0, grown = 0;
+    const int count = static_cast<int>(scalar.r.overlap.size() / (sizeof(mdr_schedule) / sizeof(mdr_schedule[0])));
+    for (int side = 0; side < 2; ++side)
+      for (int k = 0; k < count; ++k)
+        bulk_max = std::max(
+            bulk_max,
+            scalar.r
+                .history[static_cast<std::size_t>(Model::side_base(side) + Model::SideField::bulk_delta_bulk) * count +
+                         k]);
+    auto r0 = test::to_host(pair_scene<T, D>(1.0, 1).p.radius);
+    for (std::size_t i = 0; i < scalar.radius.size(); ++i)
+      grown = std::max(grown, scalar.radius[i] / double(r0(i)) - 1);
+    CAPTURE(bulk_max, grown);
+    if (opt.psi_b == 1.0) {
+      CHECK(bulk_max > 0);
+      CHECK(grown == 0);
+    } else {
+      CHECK(bulk_max == 0);
+      CHECK(grown > 1e-3);
+    }
+    // a few ulp per side law (lane_two_asin_sqrt against libm's asin), carried over 11 passes
+    const double rel = std::is_same<T, float>::value ? 2e-5 : 1e-11;
+    for (const auto* other : {&lanes8, &lanes16, &dispatched}) {
+      check_close(scalar.r.force, other->r.force, rel, "force");
+      check_close(scalar.r.torque, other->r.torque, rel, "torque");
+      check_close(scalar.r.history, other->r.history, rel, "history");
+      check_close(scalar.r.normal_force, other->r.normal_force, rel, "normal force output");
+      check_close(scalar.r.overlap, other->r.overlap, rel, "overlap output");
+      check_close(scalar.radius, other->radius, rel, "radii");
+      check_close(scalar.psi, other->psi, rel, "psi");
+    }
+  }
+}
+
+}  // namespace
+
+TEMPLATE_LIST_TEST_CASE("contacts in lanes: MDR as LAMMPS runs it, its common path and its rare contacts", "[lanes]",
+                        test::BackendsAndScalars) {
+  using D = typename TestType::device;
+  using T = typename TestType::scalar;
+  using Model = Mdr<T, Effects<kPlasticity | kRadiusGrowth | kFriction | kDamping | kBulkResponse>, D>;
+  // GPUs keep no plastic shape in the history (Mdr::stores_shape): the lane form needs it
+  STATIC_REQUIRE(detail::runs_in_lanes<Model>::value == Model::stores_shape);
+  STATIC_REQUIRE_FALSE(detail::runs_in_lanes<Mdr<T, Effects<kAllEffects & ~kRolling>, D>>::value);  // adhesion
+  auto mats = pair_materials<T>(0.5);
+  mats[0].yield_stress = 1e8;
+  // psi_b 0.5 (LAMMPS's): this packing's particles keep psi above it, so they grow; psi_b 1: every
+  // particle in contact takes Part II's bulk response (F_BULK, delta_BULK), and none grows
+  for (double psi_b : {0.5, 1.0}) {
+    CAPTURE(psi_b);
+    const MdrOptions opt = mdr_authors_options<T>(psi_b);
+    compare_mdr_lanes<Model, T, D>(mats, opt);
   }
 }

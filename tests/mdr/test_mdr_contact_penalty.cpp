@@ -366,6 +366,13 @@ TEST_CASE("contact penalty: off by default; no weights computed", "[mdr][penalty
   CHECK_FALSE(m.penalty.on);
   const auto p = particles_of<double, DefaultDevice>(triangle(1e-3, 1.9e-3, 0.5 * 1.9e-3));
   m.compute_contact_penalty(p, list_of<DefaultDevice>({{0, 1}, {0, 2}, {1, 2}}));
-  CHECK(m.penalty.weight.extent(0) == 0);
+  // nothing weighed: the weights stay Mdr::create's one placeholder entry (the in-bounds load of
+  // weight_of_lane), and both forms read 1
+  CHECK(m.penalty.weight.extent(0) == 1);
   CHECK(m.penalty.weight_of(0) == 1.0);
+  CHECK(m.penalty.weight_of(2) == 1.0);
+  if (Kokkos::SpaceAccessibility<Kokkos::HostSpace, DefaultDevice::memory_space>::accessible) {
+    CHECK(m.penalty.weight_of_lane(0) == 1.0);  // the lane form loads the placeholder
+    CHECK(m.penalty.weight_of_lane(2) == 1.0);
+  }
 }

@@ -1,13 +1,18 @@
 #pragma once
 // Contacts in lanes: the pair kernel of compute/contact_forces.hpp for laws whose normal force has
-// a branch-free form in the pair's constants, the overlap and R* (a `normal_lane` member), with
-// no rolling resistance, in scenes of one material (the pair's constants are then the same for
-// every lane; with several, the lanes' gathered constants have no vector load and the
-// one-contact kernel is faster). Two kinds of lane form:
-//   - without normal history, the whole law (models/hertz_mindlin.hpp);
+// a branch-free form (a lane form), with no rolling resistance, in scenes of one material (the
+// pair's constants are then the same for every lane; with several, the lanes' gathered constants
+// have no vector load and the one-contact kernel is faster). Three kinds of lane form:
+//   - without normal history, the whole law in the pair's constants, the overlap and R*
+//     (`normal_lane`, models/hertz_mindlin.hpp);
 //   - with normal history, the law's common path only (models/nan2022/nan2022.hpp: loading and
 //     unloading in contact): the lane form rewrites the history fields and flags the lanes its
-//     common path does not cover, which then take the one-contact kernel's code.
+//     common path does not cover, which then take the one-contact kernel's code;
+//   - a contact lane form (`contact_lane`, models/mdr/mdr_model.hpp): as the second, but it also
+//     reads per-particle and per-contact state of its own (MDR's R_o, V, Part II's psi, the
+//     contact penalty's weight) and returns per-particle sums that stage 6 adds through the
+//     law's `add_lane_sums`; its sides are ordered by global id (each pair is taken smaller id
+//     first) and its conventions (contact_conventions) are applied by selects.
 // The law returns its constants for lanes from `lane_pair(0)`, and may declare
 // `static constexpr bool lane_form` (false: no lanes for this effect set) and a host member
 // `bool lane_form_applies() const` (false: no lanes for these parameters).
@@ -73,37 +78,107 @@ struct has_history_lane<
                        std::declval<const typename M::lane_constants&>(), std::declval<typename M::scalar_type>(),
                        std::declval<typename M::scalar_type>(), std::declval<lane_history_t<M>&>()))>>
     : std::true_type {};
+// A lane form that reads state of its own (per particle, per contact) and adds per-particle
+// sums: `contact_lane(pair, LaneContact, history, sums, rare) const` (history and sums: the
+// lane's LaneColumn of the block's arrays) and `add_lane_sums(i, j, sums) const`, with
+// `lane_sum_count` (models/mdr/mdr_model.hpp).
+template <class M, class = void>
+struct lane_sum_count : std::integral_constant<int, 0> {};
+template <class M>
+struct lane_sum_count<M, std::void_t<decltype(M::lane_sum_count)>> : std::integral_constant<int, M::lane_sum_count> {};
+template <class M, class = void>
+struct has_contact_lane : std::false_type {};
+template <class M>
+struct has_contact_lane<M, std::void_t<typename M::lane_constants,
+                                       decltype(std::declval<const M&>().contact_lane(
+                                           std::declval<const typename M::lane_constants&>(),
+                                           std::declval<const LaneContact<typename M::scalar_type, int>&>(),
+                                           std::declval<const LaneColumn<typename M::scalar_type, 1>&>(),
+                                           std::declval<const LaneColumn<typename M::scalar_type, 1>&>(),
+                                           std::declval<typename M::scalar_type&>())),
+                                       decltype(std::declval<const M&>().add_lane_sums(
+                                           0, 0, std::declval<const LaneColumn<typename M::scalar_type, 1>&>()))>>
+    : std::true_type {};
 template <class M, class = void>
 struct lane_form_declared : std::true_type {};
 template <class M>
 struct lane_form_declared<M, std::void_t<decltype(M::lane_form)>> : std::integral_constant<bool, M::lane_form> {};
 
-// Laws the lanes kernel computes exactly as the scalar kernel: a lane form (of the kind its
-// normal history needs), no rolling resistance, no side order, the generic conventions around
-// the normal force.
+// Laws the lanes kernel computes as the scalar kernel: a lane form (of the kind its normal history
+// needs), no rolling resistance; side order (each pair in global-id order) and conventions of
+// their own only with a contact lane form (the kernel orders every pair by id for it).
 template <class M>
 struct runs_in_lanes
     : std::integral_constant<
           bool, lane_form_declared<M>::value &&
-                    (M::normal_history_size == 0 ? has_normal_lane<M>::value : has_history_lane<M>::value) &&
-                    !rolling_on<M>::value && !uses_side_order<M>::value &&
-                    std::is_same<typename contact_conventions<M>::type, GenericContactConventions>::value> {};
+                    (has_contact_lane<M>::value ||
+                     ((M::normal_history_size == 0 ? has_normal_lane<M>::value : has_history_lane<M>::value) &&
+                      !uses_side_order<M>::value &&
+                      std::is_same<typename contact_conventions<M>::type, GenericContactConventions>::value)) &&
+                    !rolling_on<M>::value> {};
 
-// The lane form of either kind (a struct: the kernel's lambda cannot hold an if constexpr).
-template <class M, bool History = (M::normal_history_size > 0)>
+// The lane form of each kind (a struct: the kernel's lambda cannot hold an if constexpr). eval
+// runs lane l of a block: nh, the block's normal history (nh[field][lane]), rewritten where the
+// common path holds; sums, the block's per-particle sums of the law; rare: 1 where the law's
+// common path does not hold (the lane's history is then left as it was).
+template <class M, bool Contact = has_contact_lane<M>::value, bool History = (M::normal_history_size > 0)>
 struct lane_law {
-  template <class P, class T, class H>
-  KOKKOS_FORCEINLINE_FUNCTION static NormalForce<T> eval(const P& pair, T delta, T R_eff, H&) {
-    return M::normal_lane(pair, delta, R_eff);
+  template <class P, class C, class T, int N, int S, int W>
+  KOKKOS_FORCEINLINE_FUNCTION static NormalForce<T> eval(const M&, const P& pair, const C& c, T (&)[N][W], int,
+                                                         T (&)[S][W], T& rare) {
+    rare = T(0);
+    return M::normal_lane(pair, c.delta, c.R_eff);
   }
+  template <class S>
+  KOKKOS_FORCEINLINE_FUNCTION static void add_sums(const M&, int, int, const S&) {}
 };
 template <class M>
-struct lane_law<M, true> {
-  template <class P, class T, class H>
-  KOKKOS_FORCEINLINE_FUNCTION static NormalForce<T> eval(const P& pair, T delta, T R_eff, H& hist) {
-    return M::normal_lane(pair, delta, R_eff, hist);
+struct lane_law<M, false, true> {
+  template <class P, class C, class T, int N, int S, int W>
+  KOKKOS_FORCEINLINE_FUNCTION static NormalForce<T> eval(const M&, const P& pair, const C& c, T (&nh)[N][W], int l,
+                                                         T (&)[S][W], T& rare) {
+    lane_history_t<M> lh;
+    for (int f = 0; f < M::normal_history_size; ++f) lh.v[f] = nh[f][l];
+    lh.rare = false;
+    const NormalForce<T> nf = M::normal_lane(pair, c.delta, c.R_eff, lh);
+    // rare lanes keep the stored history (their one-contact code reads it back)
+    for (int f = 0; f < M::normal_history_size; ++f) nh[f][l] = lane_select(lh.rare, nh[f][l], lh.v[f]);
+    rare = lane_select(lh.rare, T(1), T(0));
+    return nf;
+  }
+  template <class S>
+  KOKKOS_FORCEINLINE_FUNCTION static void add_sums(const M&, int, int, const S&) {}
+};
+template <class M, bool History>
+struct lane_law<M, true, History> {
+  template <class P, class C, class T, int N, int S, int W>
+  KOKKOS_FORCEINLINE_FUNCTION static NormalForce<T> eval(const M& model, const P& pair, const C& c, T (&nh)[N][W],
+                                                         int l, T (&sums)[S][W], T& rare) {
+    return model.contact_lane(pair, c, LaneColumn<T, W>{nh, l}, LaneColumn<T, W>{sums, l}, rare);
+  }
+  template <class S>
+  KOKKOS_FORCEINLINE_FUNCTION static void add_sums(const M& model, int i, int j, const S& sums) {
+    model.add_lane_sums(i, j, sums);
   }
 };
+
+// The tangential velocity at the contact: v_c minus its normal part; with the authors' full-radius
+// arms (ContactConventions::full_radius_arms) the rolling part from R_i w_i + R_j w_j, as
+// finish_contact, by selects (a generic law's conventions compile it away).
+template <class T>
+KOKKOS_FORCEINLINE_FUNCTION Vec3<T> lane_tangential_velocity(const GenericContactConventions&, const Vec3<T>& v_c,
+                                                             const Vec3<T>&, T vn, const Vec3<T>& n, const Vec3<T>&) {
+  return v_c - vn * n;
+}
+template <class T>
+KOKKOS_FORCEINLINE_FUNCTION Vec3<T> lane_tangential_velocity(const ContactConventions& conv, const Vec3<T>& v_c,
+                                                             const Vec3<T>& v_rel, T vn, const Vec3<T>& n,
+                                                             const Vec3<T>& w_full) {
+  const Vec3<T> arms = v_c - vn * n;
+  const Vec3<T> full = v_rel - vn * n - cross(w_full, n);
+  const bool f = conv.full_radius_arms;
+  return Vec3<T>(lane_select(f, full.x, arms.x), lane_select(f, full.y, arms.y), lane_select(f, full.z, arms.z));
+}
 
 // Host: whether the law's lane form holds for this model's parameters (default: always).
 template <class M, class = void>
@@ -134,10 +209,11 @@ void pair_kernel_lanes(const Model& model, const Particles<T, Device>& p, const 
   using exec = typename Device::execution_space;
   using Eff = typename Model::effects;
   using Pair = typename Model::lane_constants;
-  using History = lane_history_t<Model>;
   constexpr bool friction = Eff::friction;
   constexpr int NH = Model::normal_history_size;  // the tangential spring's fields follow
   constexpr int NHL = NH > 0 ? NH : 1;
+  constexpr int NS = lane_sum_count<Model>::value;  // the law's per-particle sums per lane
+  using Law = lane_law<Model>;
   // Host lanes' particle indices as wide as T where the lanes take 512-bit vectors
   // (kHostLanes512): the lane loop's elements are then all of one width (float's geometry in
   // double aside), and g++ takes one 512-bit vector for 8 lanes of double. With 4-byte indices
@@ -151,7 +227,8 @@ void pair_kernel_lanes(const Model& model, const Particles<T, Device>& p, const 
   const auto tsum = sums.torque.scatter;
   const auto first = c.first;
   const auto second = c.second;
-  const bool by_gid = friction && !c.gid_ordered;  // the history's frame from the ids, per contact
+  // the history's frame (and a side-ordered law's sides) from the ids, per contact
+  const bool by_gid = (friction || has_contact_lane<Model>::value) && !c.gid_ordered;
   const auto conv = contact_conventions<Model>::of(model);
   const ContactForceBuffer<T, Device> nobuf{};  // the rare lanes add into the sums, as the lanes
   const auto hdata = h.data;
@@ -163,13 +240,14 @@ void pair_kernel_lanes(const Model& model, const Particles<T, Device>& p, const 
       "epac::compute_pair_forces_lanes", Kokkos::RangePolicy<exec>(0, (count + W - 1) / W), KOKKOS_LAMBDA(int b) {
         const int k0 = b * W;
         const int lanes = count - k0 < W ? count - k0 : W;
-        Index L_i[W], L_j[W];
+        Index L_i[W], L_j[W], L_k[W];  // L_k: the lanes' contacts (a contact lane form reads it)
         T L_hx[W], L_hy[W], L_hz[W];
         T L_nx[W], L_ny[W], L_nz[W], L_delta[W], L_fn[W];
         T L_ftx[W], L_fty[W], L_ftz[W], L_f_lim[W], L_ft2[W], L_k_t[W];
         T L_arm_i[W], L_arm_j[W];
         T L_active[W], L_slides[W];  // flags as T (1 or 0): the vectors' element size
         T L_nh[NHL][W], L_rare[W];
+        T L_sums[NS > 0 ? NS : 1][W];
         // 1. gather; lanes past the list's end repeat the block's first contact (finite
         //    arithmetic, nothing stored). A full block reads contiguous entries: vector loads
         //    (the tail block's select would make the compiler assemble them from scalar loads)
@@ -178,6 +256,7 @@ void pair_kernel_lanes(const Model& model, const Particles<T, Device>& p, const 
             const int k = lane_k(l);
             L_i[l] = first(k);
             L_j[l] = second(k);
+            L_k[l] = k;
           }
           // history in the frame of the smaller global id: swapped by selects, in a loop of its
           // own (no branch in a loop: they vectorise); a list ordered by ids needs neither
@@ -232,29 +311,30 @@ void pair_kernel_lanes(const Model& model, const Particles<T, Device>& p, const 
           const Vec3<T> v_rel(p.v(i, 0) - p.v(j, 0), p.v(i, 1) - p.v(j, 1), p.v(i, 2) - p.v(j, 2));
           const Vec3<T> v_c = v_rel - cross(w_arm, n);
           const T vn = dot(v_c, n);
-          History lh;
-          for (int f = 0; f < NH; ++f) lh.v[f] = L_nh[f][l];
-          lh.rare = false;
-          const NormalForce<T> nf = lane_law<Model>::eval(pair, T(delta), R_eff, lh);
-          // rare lanes keep the stored history (their one-contact code reads it back)
-          for (int f = 0; f < NH; ++f) L_nh[f][l] = lane_select(lh.rare, L_nh[f][l], lh.v[f]);
-          L_rare[l] = lane_select(lh.rare, T(1), T(0));
+          const LaneContact<T, Index> lc{i, j, L_k[l], T(delta), R_i, R_j, R_eff};
+          T rare_flag = T(0);  // rare lanes keep the stored history (their one-contact code reads it back)
+          const NormalForce<T> nf = Law::eval(model, pair, lc, L_nh, l, L_sums, rare_flag);
+          L_rare[l] = rare_flag;
+          const bool rare = rare_flag != T(0);
           T fn = nf.f;
           T root_mkn = T(0);
           if (Eff::damping) {                                       // as finish_contact, with the generic conventions
             root_mkn = math::sqrt(lane_max(m_eff * nf.k_n, T(0)));  // sqrt_nonneg
             const T fd = nf.damping * root_mkn * (-vn);
             const T damped = fn + fd;
-            fn = lane_select(nf.damp_compressive_only, lane_select(fn > T(0), lane_max(damped, T(0)), fn), damped);
+            const T pushed = lane_select(conv.damp_may_pull, damped, lane_max(damped, T(0)));
+            fn = lane_select(nf.damp_compressive_only, lane_select(fn > T(0), pushed, fn), damped);
           }
           TangentialTrial<T> tt;  // zero without friction
           T f_lim = T(0), ft2 = T(0);
           if (friction) {
-            const Vec3<T> v_t = v_c - vn * n;
+            const Vec3<T> w_full = R_i * Vec3<T>(p.omega(i, 0), p.omega(i, 1), p.omega(i, 2)) +
+                                   R_j * Vec3<T>(p.omega(j, 0), p.omega(j, 1), p.omega(j, 2));
+            const Vec3<T> v_t = lane_tangential_velocity(conv, v_c, v_rel, vn, n, w_full);
             // lane laws have k_t = kt_root_ratio^2 k_n (both 0 for a rigid pair): one root
             const T damp_t = Eff::damping ? nf.damping_t * root_mkn * nf.kt_root_ratio : T(0);
             tt = tangential_trial(Vec3<T>(L_hx[l], L_hy[l], L_hz[l]), n, v_t, nf.k_t, damp_t, dt);
-            f_lim = nf.mu * math::fabs(nf.f);
+            f_lim = nf.mu * math::fabs(lane_select(conv.coulomb_on_damped, fn, nf.f));  // the bound's force
             ft2 = dot(tt.ft, tt.ft);
           }
           L_nx[l] = n.x;
@@ -262,9 +342,9 @@ void pair_kernel_lanes(const Model& model, const Particles<T, Device>& p, const 
           L_nz[l] = n.z;
           L_delta[l] = T(delta);
           L_fn[l] = lane_select(nf.active, fn, T(0));
-          L_active[l] = lane_select(nf.active & !lh.rare, T(1), T(0));  // rare lanes: stage 5 adds theirs
+          L_active[l] = lane_select(nf.active & !rare, T(1), T(0));  // rare lanes: stage 5 adds theirs
           const T f_lim2 = f_lim * f_lim;
-          L_slides[l] = lane_select(nf.active & !lh.rare & (ft2 > f_lim2), T(1), T(0));  // & not &&: no branch
+          L_slides[l] = lane_select(nf.active & !rare & (ft2 > f_lim2), T(1), T(0));  // & not &&: no branch
           L_ftx[l] = tt.ft.x;
           L_fty[l] = tt.ft.y;
           L_ftz[l] = tt.ft.z;
@@ -274,9 +354,9 @@ void pair_kernel_lanes(const Model& model, const Particles<T, Device>& p, const 
           L_arm_i[l] = arm_i;
           L_arm_j[l] = arm_j;
           // apart: the spring is forgotten (reset_tangential)
-          L_hx[l] = lane_select(lh.rare, L_hx[l], lane_select(nf.active, tt.xi.x, T(0)));
-          L_hy[l] = lane_select(lh.rare, L_hy[l], lane_select(nf.active, tt.xi.y, T(0)));
-          L_hz[l] = lane_select(lh.rare, L_hz[l], lane_select(nf.active, tt.xi.z, T(0)));
+          L_hx[l] = lane_select(rare, L_hx[l], lane_select(nf.active, tt.xi.x, T(0)));
+          L_hy[l] = lane_select(rare, L_hy[l], lane_select(nf.active, tt.xi.y, T(0)));
+          L_hz[l] = lane_select(rare, L_hz[l], lane_select(nf.active, tt.xi.z, T(0)));
         }
         auto fa = fsum.access();
         auto ta = tsum.access();
@@ -342,6 +422,7 @@ void pair_kernel_lanes(const Model& model, const Particles<T, Device>& p, const 
           }
           scatter_add3(fa, L_i[l], F);
           scatter_add3(fa, L_j[l], T(-1) * F);
+          if (NS > 0) Law::add_sums(model, int(L_i[l]), int(L_j[l]), LaneColumn<T, W>{L_sums, l});
         }
       });
 }

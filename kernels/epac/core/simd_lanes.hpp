@@ -99,4 +99,23 @@ struct LaneHistory {
   bool rare;
 };
 
+// One lane's pair contact for a lane form that reads per-particle or per-contact state of its own
+// (compute/pair_lanes.hpp, `contact_lane`): the particles (i before j in global-id order), the
+// contact's index in its list, the overlap and the radii.
+template <class T, class Index>
+struct LaneContact {
+  Index i, j, k;  // one index type: mixed widths split the host's vectors (compute/pair_lanes.hpp)
+  T delta, R_i, R_j, R_eff;
+};
+
+// One lane of a block's lane arrays (a[field][lane]): field f of lane l is a[f][l]. A contact
+// lane form reads and writes its history and its sums through it, so the lane loop keeps no copy
+// (a loop over a copy's fields is an inner loop, which the vectoriser refuses).
+template <class T, int W>
+struct LaneColumn {
+  T (*a)[W];
+  int l;
+  KOKKOS_FORCEINLINE_FUNCTION T& operator[](int f) const { return a[f][l]; }
+};
+
 }  // namespace epac

@@ -120,6 +120,14 @@ struct MdrContactPenalty {
   KOKKOS_INLINE_FUNCTION T weight_of(int k) const {
     return (on && k >= 0 && k < static_cast<int>(weight.extent(0))) ? weight(k) : T(1);
   }
+  // weight_of for contacts in lanes (Mdr::contact_lane), without a branch or a masked load: the
+  // weights hold at least one entry from Mdr::create on (a 1 until the first weigh), so the load
+  // is always in bounds; while on, the pass's list was weighed before it (its k are in bounds).
+  template <class Index>
+  KOKKOS_FORCEINLINE_FUNCTION T weight_of_lane(Index k) const {
+    const Index idx = lane_select(on, lane_min(k, static_cast<Index>(weight.extent(0)) - Index(1)), Index(0));
+    return lane_select(on, weight(idx), T(1));
+  }
 
   // Host: the CSR of each particle's pair contacts, each particle's range sorted by the partners'
   // (global id, index), so that weigh() meets the third particles of a contact in that order by

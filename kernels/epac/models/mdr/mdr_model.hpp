@@ -58,6 +58,8 @@
 #include <epac/models/mdr/detail/mdr_pair_balance.hpp>
 #include <epac/models/mdr/detail/mdr_pair_equal.hpp>
 #include <epac/models/mdr/detail/mdr_pair_split.hpp>
+#include <epac/models/mdr/detail/mdr_side_lane.hpp>
+#include <epac/models/mdr/detail/mdr_split_lane.hpp>
 #include <epac/models/mdr/detail/mdr_side_force.hpp>
 #include <epac/models/mdr/mdr_bulk_response.hpp>
 #include <epac/models/mdr/mdr_contact_penalty.hpp>
@@ -326,6 +328,74 @@ struct Mdr {
     return evaluate<false>(g, row, nullptr);
   }
 
+  // --- contacts in lanes (compute/pair_lanes.hpp) ---
+  // The common path of a pair contact as the geometric split runs it (MdrPairSplit::geometric,
+  // the side-by-side's like-with-like scene): both sides yielded, below their delta_max, on their
+  // stored shapes (detail/mdr_side_lane.hpp), the pair between its summed residuals and its
+  // largest overlap (detail/mdr_split_lane.hpp), with Part II and growth without plastic loading.
+  // Every other contact is flagged rare and takes evaluate<true> from its stored history. Its
+  // values are evaluate's expressions in its order, except the side law's ellipse angle
+  // (lane_two_asin_sqrt, within 2 ulp of libm's): the two kernels agree to a few ulp.
+  static constexpr bool lane_form = Eff::plasticity && !Eff::adhesion && stores_shape;
+  static constexpr int lane_sum_count = 8;  // per side: eps_c (37)-(38), A_con, A_tot's sum, V_cap
+  using lane_constants = MdrPairConstants<T>;
+  KOKKOS_FORCEINLINE_FUNCTION lane_constants lane_pair(int k) const { return pairs(k); }
+  // Host: the options the lane form covers. Growth and Part II bound (their views are read without
+  // a test), the plastic_loading growth rule, no per-contact growth terms (deterministic mode),
+  // the tangential damping either off or the authors' (k_t is not a fixed multiple of k_n).
+  bool lane_form_applies() const {
+    return geometric_split && !authors_unloading && !equal_pair_split && !growth_terms.enabled &&
+           (!Eff::radius_growth || (growth.bound() && growth.rule == MdrGrowthRule::plastic_loading)) &&
+           (!Eff::bulk_response || bulk_active()) && (!(Eff::friction && Eff::damping) || authors_friction) &&
+           penalty.weight.extent(0) > 0;
+  }
+
+  // h: the lane's history fields (h[f]), rewritten where the common path holds and left as they
+  // were where it does not (rare set to 1: the kernel then takes evaluate from the stored row);
+  // sums[q]: the lane's per-particle sums, added by add_lane_sums. Side 0 is c.i, the smaller
+  // global id (the lanes kernel orders each pair so), hence material a (set_pair_sides, unswapped).
+  template <class Index, class Hist, class Sums>
+  KOKKOS_FORCEINLINE_FUNCTION NormalForce<T> contact_lane(const lane_constants& pc, const LaneContact<T, Index>& c,
+                                                          const Hist& h, const Sums& sums, T& rare) const {
+    const T w = penalty.weight_of_lane(c.k);  // the contact penalty's weight (1 without it)
+    // load_growth: R_o and the shift of delta_max of each side
+    const T R0_i = Eff::radius_growth ? growth.radius0(c.i) : c.R_i;
+    const T R0_j = Eff::radius_growth ? growth.radius0(c.j) : c.R_j;
+    const T g_i = Eff::radius_growth ? growth_in_max * (c.R_i - R0_i) : T(0);
+    const T g_j = Eff::radius_growth ? growth_in_max * (c.R_j - R0_j) : T(0);
+    // split_pair_overlap: a pair past its largest overlap loads (rare: delta_o,max moves)
+    const T shift = g_i + g_j;
+    const T old = h[PairField::delta_o_max];
+    const T dmax_o = lane_max(old, c.delta - shift);
+    const MdrSplitLane<T> so =
+        mdr_split_overlap_lane(c.delta, dmax_o + shift, c.R_i, c.R_j, h[side_base(0) + SideField::delta_p],
+                               h[side_base(1) + SideField::delta_p]);
+    const LaneSide s0 = lane_side(pc.side_a, h, side_base(0), c.i, so.d0, c.R_i, R0_i, g_i, w);
+    const LaneSide s1 = lane_side(pc.side_b, h, side_base(1), c.j, so.d1, c.R_j, R0_j, g_j, w);
+    const bool is_rare =
+        !(c.delta > T(0)) | (dmax_o != old) | (so.rare != T(0)) | (s0.rare != T(0)) | (s1.rare != T(0));
+    commit_lane_side(h, sums, 0, s0, is_rare);
+    commit_lane_side(h, sums, 1, s1, is_rare);
+    rare = lane_select(is_rare, T(1), T(0));
+    return lane_normal_force(pc, (s0.F + s1.F) * T(0.5) * w, s0.a + s1.a, w, c.R_eff);
+  }
+
+  // The kernel's scatter of a common-path lane's sums (contact_lane's order: side 0, side 1).
+  template <class Sums>
+  KOKKOS_FORCEINLINE_FUNCTION void add_lane_sums(int i, int j, const Sums& sums) const {
+    const int part[2] = {i, j};
+    for (int s = 0; s < 2; ++s) {
+      if (Eff::radius_growth) {
+        auto acc = growth.sums.scatter.access();
+        acc(part[s], int(MdrGrowthState<T, Device>::kEps)) += sums[4 * s];
+      }
+      if (Eff::bulk_response) {
+        auto acc = bulk.sums.scatter.access();
+        for (int q = 0; q < 3; ++q) acc(part[s], q) += sums[4 * s + 1 + q];
+      }
+    }
+  }
+
   // --- host ---
 
   // Builds the tables. Materials used by particles must be deformable; rigid ones serve walls.
@@ -366,6 +436,10 @@ struct Mdr {
     m.growth.volume_floor = T(opt.volume_floor);
     m.rolling = RollingTable<T, Device, Eff::rolling>::create(materials);
     m.penalty.on = opt.contact_penalty;
+    // one weight of 1 until the first weigh(): weight_of_lane's load stays in bounds, and an unweighed
+    // list reads 1 from either form
+    m.penalty.weight = Kokkos::View<T*, Device>("mdr.penalty.weight", 1);
+    Kokkos::deep_copy(m.penalty.weight, T(1));
     if (opt.psi_b > 0.0 && !Eff::bulk_response)
       throw ParameterError("mdr: psi_b = " + std::to_string(opt.psi_b) +
                            " needs the bulk response compiled in (effect kBulkResponse); valid without it: psi_b = 0");
@@ -507,6 +581,114 @@ struct Mdr {
   }
 
  private:
+  // --- contact_lane's steps ---
+
+  // One side of a lane on the common path: its force and half-width, its new history values and
+  // its terms of the per-particle sums.
+  struct LaneSide {
+    T F, a, rare;
+    T delta, delta_mdr, delta_bulk, area_w;  // Part II's history (bulk_delta_last, _mdr, _bulk, area_w)
+    T delta_o_prev, eps;                     // growth's history (eps: eps_prev and the sum's term)
+    T acon, atot, vcap;                      // Part II's terms (mdr_bulk_add_side)
+  };
+
+  // The side's law at its split overlap d (Part II: at delta_MDR, bulk_split as selects), F_BULK
+  // and A_c (bulk_forces; the side is yielded on the common path), and the terms of commit_side:
+  // growth's Christoffersen term (mdr_growth_add_side; no plastic loading, so no terms of (37))
+  // and Part II's (mdr_bulk_add_side). Division by V (>= volume_floor V_o > 0) and V_geo (same).
+  template <class Hist, class Index>
+  KOKKOS_FORCEINLINE_FUNCTION LaneSide lane_side(const MdrSideConstants<T>& sc, const Hist& h, int b, Index p, T d, T R,
+                                                 T R0, T growth_of, T w) const {
+    const T pi = constants<T>::pi;
+    LaneSide o{};
+    o.delta = d;
+    T d_mdr = d, area_c = T(0), f_bulk = T(0);
+    if (Eff::bulk_response) {
+      const T ddelta = d - h[b + SideField::bulk_delta_last];
+      const T ddelta_bar = bulk.ddelta_bar(p);
+      const bool triggered = bulk.psi(p) < bulk.psi_b;
+      const T dd_mdr =
+          lane_select(triggered, lane_min(ddelta - ddelta_bar, d - h[b + SideField::bulk_delta_mdr]), ddelta);
+      d_mdr = h[b + SideField::bulk_delta_mdr] + dd_mdr;
+      o.delta_mdr = d_mdr;
+      o.delta_bulk = lane_max(T(0), h[b + SideField::bulk_delta_bulk] + lane_select(triggered, ddelta_bar, T(0)));
+    }
+    MdrSideState<T> st;
+    st.delta_o_max = h[b + SideField::delta_o_max];
+    st.yielded = h[b + SideField::yielded];
+    st.c_A = h[b + SideField::c_A];
+    st.delta_p = h[b + SideField::delta_p];
+    st.shape_delta_max = h[b + SideField::shape_delta_max];
+    st.shape_R = h[b + SideField::shape_R];
+    st.shape_A = h[b + SideField::shape_A];
+    st.shape_a_max = h[b + SideField::shape_a_max];
+    st.shape_ratio = h[b + SideField::shape_ratio];
+    const MdrSideLane<T> r = mdr_side_force_lane(sc, d_mdr, R, growth_of, st);
+    if (Eff::bulk_response) {
+      area_c = lane_max(pi * (T(2) * d * R - d * d) + st.c_A, T(0));
+      f_bulk = lane_select(o.delta_bulk > T(0), sc.kappa * bulk.acon0(p) * o.delta_bulk * area_c / bulk.vgeo(p), T(0));
+    }
+    o.F = Eff::bulk_response ? r.F + f_bulk : r.F;
+    o.a = r.a;
+    o.rare = r.rare;
+    if (Eff::radius_growth) {
+      const T V = growth.volume(p);
+      const T arm = lane_max(R - d, T(0));  // the branch length
+      o.eps = -w * o.F * arm * sc.inv_3kappa / V;
+      o.delta_o_prev = d - (R - R0);
+    }
+    if (Eff::bulk_response) {
+      o.area_w = w * area_c;
+      o.acon = w * area_c;
+      o.atot = w * (area_c - T(2) * pi * R * (r.delta_max + o.delta_bulk));
+      o.vcap = pi / T(3) * d * d * (T(3) * R - d);
+    }
+    return o;
+  }
+
+  // The side's history (kept as it was on rare lanes) and sum terms.
+  template <class Hist, class Sums>
+  static KOKKOS_FORCEINLINE_FUNCTION void commit_lane_side(const Hist& h, const Sums& sums, int s, const LaneSide& o,
+                                                           bool rare) {
+    const int b = side_base(s);
+    auto keep = [&](int f, T v) { h[b + f] = lane_select(rare, h[b + f], v); };
+    if (Eff::radius_growth) {
+      keep(SideField::delta_o_prev, o.delta_o_prev);
+      keep(SideField::eps_prev, o.eps);
+      sums[4 * s] = o.eps;
+    }
+    if (Eff::bulk_response) {
+      keep(SideField::bulk_delta_last, o.delta);
+      keep(SideField::bulk_delta_mdr, o.delta_mdr);
+      keep(SideField::bulk_delta_bulk, o.delta_bulk);
+      keep(SideField::bulk_area_w, o.area_w);
+      sums[4 * s + 1] = o.acon;
+      sums[4 * s + 2] = o.atot;
+      sums[4 * s + 3] = o.vcap;
+    }
+  }
+
+  // normal_force for a lane: force (the weighted mean), a_sum (both sides' half-widths), w.
+  KOKKOS_FORCEINLINE_FUNCTION NormalForce<T> lane_normal_force(const MdrPairConstants<T>& pc, T force, T a_sum, T w,
+                                                               T R_eff) const {
+    NormalForce<T> nf;
+    nf.active = true;
+    nf.f = force;
+    nf.k_n = T(2) * pc.E_star * a_sum * T(0.5);
+    // normal_force's options as selects (a branch on them stops the vectoriser)
+    if (Eff::damping) {
+      nf.damping = pc.c_damp * w;
+      nf.damping_t = lane_select(authors_friction, T(0), pc.c_damp);
+      nf.damp_compressive_only = true;
+    }
+    if (Eff::friction) {
+      nf.k_t = lane_select(authors_friction, k_t_authors, pc.kt_over_kn * nf.k_n);
+      nf.mu = pc.mu;
+    }
+    if (Eff::damping) nf.k_n = lane_select(authors_damping, pc.E_star * R_eff, nf.k_n);
+    return nf;
+  }
+
   // --- the steps of evaluate, in order ---
 
   // Sums over the sides (finish_sides).

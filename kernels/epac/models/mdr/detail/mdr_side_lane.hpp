@@ -1,7 +1,6 @@
 #pragma once
 // The common path of mdr_side_force (detail/mdr_side_force.hpp) without branches, for sides in
-// lanes: the first piece of a lane form of MDR (issue 20). No kernel calls it yet; the MDR pair
-// kernel is still the one-contact one (docs/performance.md, "MDR's side law in lanes").
+// lanes: part of MDR's lane form (Mdr::contact_lane, run by compute/pair_lanes.hpp).
 //
 // In a compressed packing's hold, 98.4% of the side evaluations take one branch: a yielded side
 // below its delta_max, on the plastic shape of that delta_max kept in its history
